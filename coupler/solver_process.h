@@ -1,0 +1,42 @@
+// A solver child process started by the coupler. The child gets PR_SET_PDEATHSIG (it dies if the
+// coupler dies), its own process group, and POROSPH_ENDPOINT in its environment. The destructor
+// terminates and reaps it, so no solver outlives the coupler.
+#pragma once
+
+#include <string>
+#include <sys/types.h>
+#include <vector>
+
+namespace porosph::coupler {
+
+class SolverProcess {
+ public:
+  /// fork + execvp(executable, args...). Throws std::runtime_error if the executable cannot be
+  /// found or started (checked before forking, and via a close-on-exec pipe after).
+  SolverProcess(const std::string& executable, const std::vector<std::string>& args,
+                const std::vector<std::pair<std::string, std::string>>& extra_env);
+  ~SolverProcess();
+  SolverProcess(const SolverProcess&) = delete;
+  SolverProcess& operator=(const SolverProcess&) = delete;
+
+  pid_t pid() const { return pid_; }
+  /// Non-blocking check; once it has exited, exit_description() says how.
+  bool running();
+  /// e.g. "exited with code 3" or "killed by signal 9 (Killed)".
+  std::string exit_description() const;
+  /// Waits up to `seconds` for a voluntary exit; returns true if it exited.
+  bool wait_for_exit(double seconds);
+  /// SIGTERM, wait up to `grace_seconds`, then SIGKILL; always reaps.
+  void terminate(double grace_seconds = 2.0);
+
+ private:
+  pid_t pid_ = -1;
+  bool exited_ = false;
+  int status_ = 0;
+};
+
+/// Finds a solver executable: an absolute/relative path with a slash is used as is; a bare name is
+/// looked up next to the running coupler executable first, then on PATH. Returns "" if not found.
+std::string find_solver_executable(const std::string& name_or_path);
+
+}  // namespace porosph::coupler

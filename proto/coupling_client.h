@@ -1,0 +1,118 @@
+// Solver side of the PoroSPH coupling, in the spirit of preCICE's Participant:
+//   CouplingClient client(endpoint, identity);   // connect, handshake, receive the set-up
+//   loop { command = client.exchange(state); if (command.stop) break; ... advance(command.dt) }
+//   client.finalize(timing);
+// This library is the only solver-side code that sees ZeroMQ or Protobuf; its API is plain C++.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace porosph::coupling {
+
+inline constexpr std::uint32_t kProtocolVersion = 1;
+
+struct SolverIdentity {
+  std::string phase;  ///< "water" | "soil"
+  std::string name;   ///< e.g. "porosph-fluid"
+  std::string version;
+};
+
+/// What the coupler tells a solver before the first step.
+struct SetupData {
+  std::string phase;
+  std::string scene_toml;  ///< resolved scene; parse with scene::load_scene_text
+  std::string scene_name;
+  std::string output_dir;
+  int dimension = 2;
+  double dp = 0, h = 0, dt0 = 0, end_time = 0;
+  std::vector<double> gravity;
+  double timeout_seconds = 60;
+};
+
+struct Diagnostics {
+  std::uint64_t particle_count = 0, free_count = 0, removed_count = 0;
+  double mass = 0, kinetic_energy = 0, max_speed = 0;
+  std::vector<double> momentum;
+  std::map<std::string, double> observables;
+  double physics_seconds = 0;
+};
+
+/// One solver's report after computing its accelerations for the current state.
+/// Overlap arrays are flattened row-major (n*D for vectors).
+struct StepState {
+  std::uint64_t step = 0;
+  double time = 0;
+  double dt_limit = 0, dt_cfl = 0, dt_viscous = 0, dt_force = 0;
+  std::vector<std::int64_t> overlap_id;
+  std::vector<double> overlap_position, overlap_velocity, overlap_density, overlap_mass;
+  std::vector<double> overlap_porosity;       ///< soil only
+  std::vector<std::int32_t> overlap_material;  ///< soil only
+  std::vector<double> region_min, region_max;
+  Diagnostics diagnostics;
+};
+
+/// The coupler's answer: the one shared dt and what else to do this step.
+struct StepCommand {
+  std::uint64_t step = 0;
+  double time = 0;
+  double dt = 0;
+  bool write_output = false;
+  std::uint32_t output_index = 0;
+  bool stop = false;
+  std::vector<double> interaction_acceleration;  ///< per overlap particle, n*D (may be empty)
+  std::vector<double> saturation;                ///< soil only
+  std::vector<double> other_region_min, other_region_max;
+};
+
+struct Timing {
+  double wall_seconds = 0, physics_seconds = 0, communication_seconds = 0;
+};
+
+/// The coupler reported an error, asked to shut down, or fell silent past the timeout.
+class CouplingError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class CouplingClient {
+ public:
+  /// Connects to `endpoint` (e.g. ipc:///tmp/x or tcp://host:port), sends Hello and blocks until
+  /// Setup arrives (at most `connect_timeout_seconds`). Throws CouplingError.
+  CouplingClient(const std::string& endpoint, const SolverIdentity& identity,
+                 double connect_timeout_seconds = 60.0);
+  ~CouplingClient();
+  CouplingClient(const CouplingClient&) = delete;
+  CouplingClient& operator=(const CouplingClient&) = delete;
+
+  const SetupData& setup() const;
+
+  /// Sends the state, waits for the coupler's command. The returned reference stays valid until the
+  /// next call (its vectors are reused, so exchanging allocates nothing in steady state).
+  /// Throws CouplingError on Shutdown/Error from the coupler or on timeout.
+  const StepCommand& exchange(const StepState& state);
+
+  /// Tells the coupler this solver failed (NaN, bad input...). Does not throw.
+  void report_error(const std::string& message, std::uint64_t step, double time,
+                    std::int64_t particle_id = -1) noexcept;
+
+  /// Sends Goodbye with the timing figures; call after a command with stop = true.
+  void finalize(const Timing& timing);
+
+  /// Seconds spent inside exchange() (serialising, ZeroMQ, waiting for the coupler).
+  double communication_seconds() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Endpoint a solver should use when started by the coupler: the value of the environment variable
+/// POROSPH_ENDPOINT, or the --endpoint argument when given (non-empty `cli_value` wins).
+std::string resolve_endpoint(const std::string& cli_value);
+
+}  // namespace porosph::coupling
