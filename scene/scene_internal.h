@@ -1,0 +1,76 @@
+// Internals of the scene loader, shared by its translation units (not part of the public API).
+//
+// Pipeline (scene_loader.cpp): parse TOML -> apply_overrides -> validate_against_schema (types,
+// ranges, unknown keys, defaults filled in) -> check_scene_consistency (relations between keys)
+// -> build_scene (typed Scene) -> promote_integers (resolved TOML).
+#pragma once
+
+#include <toml++/toml.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+#include "scene/scene_schema.h"
+
+namespace porosph::scene {
+
+using NodePtr = std::unique_ptr<toml::node>;
+
+/// Source name given to values parsed from `--set` overrides; errors in them name this file.
+inline const std::string kOverrideSource = "--set";
+
+/// Turns a problem at a TOML node into a SceneError naming the right file and line: the scene file
+/// and the node's line, "--set" (line 0) for a value from an override, line 0 for a missing key
+/// or a filled-in default.
+class ErrorContext {
+ public:
+  explicit ErrorContext(std::string file) : file_(std::move(file)) {}
+  const std::string& file() const { return file_; }
+  [[noreturn]] void fail(const toml::node* node, const std::string& key,
+                         const std::string& message) const;
+
+ private:
+  std::string file_;
+};
+
+// ---- text helpers (scene_text.cpp) ----
+
+/// Shortest text that reads back as the same double ("0.1", "-9.81", "1e-05").
+std::string format_number(double value);
+/// "a float", "an integer", "a string", ... for the message "expected X, got Y".
+std::string node_type_phrase(const toml::node& node);
+/// " (did you mean 'x'?)" for the candidate closest to `word` by edit distance, or "" if none is
+/// close. `prefix` is prepended to the suggestion (e.g. "run.").
+std::string did_you_mean(const std::string& word, const std::vector<std::string>& candidates,
+                         const std::string& prefix = "");
+/// Concrete key path: join("walls[1]", "max") == "walls[1].max", join("", "run") == "run".
+std::string join_key(const std::string& parent, const std::string& name);
+/// The TOML value written in `text` (e.g. "0.1", "[1, 2]", "\"x\""), its source named `source`.
+/// Returns nullptr if `text` is not a TOML value.
+NodePtr parse_toml_value(const std::string& text, const std::string& source);
+
+// ---- pipeline steps ----
+
+/// Applies each "a.b=value" to `root` (scene_overrides.cpp). Throws SceneError (file "--set").
+void apply_overrides(toml::table& root, const std::vector<std::string>& overrides,
+                     const SceneSchema& schema);
+
+/// Checks every table and key against the schema and fills in defaults (scene_validate.cpp).
+/// Returns run.dimension.
+int validate_against_schema(toml::table& root, const SceneSchema& schema,
+                            const ErrorContext& errors);
+
+/// Checks relations between keys that the schema cannot express: min < max, shapes inside the
+/// domain, polygons only in 2D, container faces, observable phases and names (scene_build.cpp).
+void check_scene_consistency(const toml::table& root, int dimension, const ErrorContext& errors);
+
+/// Reads the typed Scene from a validated, default-filled table (scene_build.cpp).
+Scene build_scene(const toml::table& root);
+
+/// Rewrites integers given for float keys as floats, so the resolved TOML shows the types the
+/// schema declares (scene_validate.cpp).
+void promote_integers(toml::table& root, const SceneSchema& schema);
+
+}  // namespace porosph::scene

@@ -1,0 +1,404 @@
+// The single declaration of every scene table and key: type, unit, default, range, description.
+// The loader validates against it and docs/scene.md is rendered from it.
+#include "scene/scene_schema.h"
+
+#include <utility>
+
+namespace porosph::scene {
+namespace {
+
+/// Fluent builder so each key reads as one sentence.
+class Key {
+ public:
+  Key(std::string path, ValueType type) {
+    spec_.path = std::move(path);
+    spec_.type = type;
+  }
+  Key& unit(std::string u) {
+    spec_.unit = std::move(u);
+    return *this;
+  }
+  Key& required() {
+    spec_.default_value = DefaultValue::required();
+    return *this;
+  }
+  Key& fallback(std::string toml) {
+    spec_.default_value = DefaultValue::constant(std::move(toml));
+    return *this;
+  }
+  Key& fallback_per_dimension(std::string toml_2d, std::string toml_3d) {
+    spec_.default_value = DefaultValue::per_dimension(std::move(toml_2d), std::move(toml_3d));
+    return *this;
+  }
+  Key& above(double v) {
+    spec_.min = Bound{v, false};
+    return *this;
+  }
+  Key& at_least(double v) {
+    spec_.min = Bound{v, true};
+    return *this;
+  }
+  Key& at_most(double v) {
+    spec_.max = Bound{v, true};
+    return *this;
+  }
+  Key& one_of(std::vector<std::string> values) {
+    spec_.allowed = std::move(values);
+    return *this;
+  }
+  Key& format(StringFormat f) {
+    spec_.format = f;
+    return *this;
+  }
+  Key& vector_length(int n) {
+    spec_.vector_length = n;
+    return *this;
+  }
+  Key& min_count(int n) {
+    spec_.min_count = n;
+    return *this;
+  }
+  Key& only_when(std::string key, std::vector<std::string> values) {
+    spec_.applies_when = Condition{std::move(key), std::move(values)};
+    return *this;
+  }
+  KeySpec doc(std::string description) {
+    spec_.description = std::move(description);
+    return spec_;
+  }
+
+ private:
+  KeySpec spec_;
+};
+
+using T = ValueType;
+
+void add_scene_and_run(SceneSchema& s) {
+  s.tables.push_back({"scene", false, true, "Identification of the scene."});
+  s.keys.push_back(Key("scene.name", T::String)
+                       .required()
+                       .format(StringFormat::Name)
+                       .doc("Scene name, written to run.json."));
+  s.keys.push_back(
+      Key("scene.description", T::String).fallback("\"\"").doc("Free text describing the scene."));
+
+  s.tables.push_back(
+      {"run", false, true, "Global run settings: dimension, resolution, time stepping, gravity."});
+  s.keys.push_back(Key("run.dimension", T::Int)
+                       .fallback("2")
+                       .at_least(2)
+                       .at_most(3)
+                       .doc("Spatial dimension (2: plane strain, 3). Every vector has this many "
+                            "components."));
+  s.keys.push_back(Key("run.end_time", T::Float)
+                       .unit("s")
+                       .required()
+                       .above(0)
+                       .doc("Simulated time at which the run ends."));
+  s.keys.push_back(Key("run.output_interval", T::Float)
+                       .unit("s")
+                       .required()
+                       .above(0)
+                       .doc("Simulated time between two snapshots / time-series rows."));
+  s.keys.push_back(Key("run.dp", T::Float)
+                       .unit("m")
+                       .required()
+                       .above(0)
+                       .doc("Particle spacing of the initial lattice."));
+  s.keys.push_back(Key("run.h_factor", T::Float)
+                       .fallback("1.2")
+                       .at_least(1.0)
+                       .at_most(3.0)
+                       .doc("Smoothing length over particle spacing, h = h_factor dp."));
+  s.keys.push_back(Key("run.dt0", T::Float)
+                       .unit("s")
+                       .required()
+                       .above(0)
+                       .doc("Initial and largest time step (time-step smoothing, Fig. 1)."));
+  s.keys.push_back(Key("run.cfl", T::Float)
+                       .fallback("0.2")
+                       .above(0)
+                       .at_most(1)
+                       .doc("C_cfl in dt_cfl = C_cfl h / (c + |v|max)."));
+  s.keys.push_back(Key("run.c_a", T::Float)
+                       .fallback("0.25")
+                       .above(0)
+                       .at_most(1)
+                       .doc("C_a in dt_force = C_a min sqrt(h / |a|) (eq. 21); 0.005 is advised "
+                            "for coupled runs."));
+  s.keys.push_back(Key("run.viscous_coefficient", T::Float)
+                       .fallback("0.125")
+                       .above(0)
+                       .at_most(1)
+                       .doc("Coefficient of the viscous limit dt_visc = coefficient h^2 / nu."));
+  s.keys.push_back(Key("run.dt_smoothing", T::Bool)
+                       .fallback("true")
+                       .doc("Smooth time-step changes (Fig. 1); false: dt = min(limits, dt0)."));
+  s.keys.push_back(Key("run.euler_every", T::Int)
+                       .fallback("40")
+                       .at_least(1)
+                       .doc("Modified Verlet: one Euler step every this many steps."));
+  s.keys.push_back(Key("run.solver_timeout", T::Float)
+                       .unit("s")
+                       .fallback("60.0")
+                       .above(0)
+                       .doc("A solver process silent for this long (wall time) fails the run."));
+  s.keys.push_back(Key("run.gravity", T::Vector)
+                       .unit("m/s^2")
+                       .fallback_per_dimension("[0.0, -9.81]", "[0.0, 0.0, -9.81]")
+                       .doc("Gravitational acceleration."));
+  s.keys.push_back(Key("run.periodic", T::BoolVector)
+                       .fallback_per_dimension("[false, false]", "[false, false, false]")
+                       .doc("Per axis: particles leaving the domain through a face re-enter "
+                            "through the opposite face."));
+  s.keys.push_back(Key("run.kernel", T::String)
+                       .fallback("\"cubic_spline\"")
+                       .one_of({"cubic_spline", "wendland_c2"})
+                       .doc("SPH smoothing kernel (support 2h)."));
+
+  s.tables.push_back({"domain", false, true,
+                      "The simulation box. Periodic axes wrap at its faces; particles leaving it "
+                      "are removed and counted."});
+  s.keys.push_back(
+      Key("domain.min", T::Vector).unit("m").required().doc("Lower corner of the domain."));
+  s.keys.push_back(Key("domain.max", T::Vector)
+                       .unit("m")
+                       .required()
+                       .doc("Upper corner of the domain; greater than min in every component."));
+}
+
+void add_water(SceneSchema& s) {
+  s.tables.push_back({"water", false, false,
+                      "The water phase (weakly compressible SPH). Its presence means the scene has "
+                      "water."});
+  s.keys.push_back(
+      Key("water.rho0", T::Float).unit("kg/m^3").fallback("1000.0").above(0).doc("Rest density."));
+  s.keys.push_back(Key("water.sound_speed", T::Float)
+                       .unit("m/s")
+                       .required()
+                       .above(0)
+                       .doc("Numerical sound speed c of the Tait equation (eq. 4); at least 10 "
+                            "times the largest expected speed."));
+  s.keys.push_back(Key("water.viscosity", T::Float)
+                       .unit("Pa s")
+                       .fallback("0.001")
+                       .at_least(0)
+                       .doc("Dynamic viscosity mu (Morris 1997 laminar term); 0 switches it off."));
+  s.keys.push_back(Key("water.alpha", T::Float)
+                       .fallback("0.05")
+                       .at_least(0)
+                       .doc("Monaghan artificial viscosity alpha; 0 switches it off."));
+  s.keys.push_back(Key("water.beta", T::Float)
+                       .fallback("0.0")
+                       .at_least(0)
+                       .doc("Monaghan artificial viscosity beta."));
+  s.keys.push_back(Key("water.gamma", T::Float)
+                       .fallback("7.0")
+                       .at_least(1)
+                       .doc("Exponent of the Tait equation of state (eq. 4)."));
+  s.keys.push_back(Key("water.density_filter_every", T::Int)
+                       .fallback("0")
+                       .at_least(0)
+                       .doc("Shepard density re-initialisation every this many steps; 0: off."));
+  s.keys.push_back(Key("water.hydrostatic_initial", T::Bool)
+                       .fallback("true")
+                       .doc("Initial density from the hydrostatic pressure (inverse of eq. 4)."));
+  s.keys.push_back(Key("water.wall_condition", T::String)
+                       .fallback("\"no_slip\"")
+                       .one_of({"no_slip", "free_slip"})
+                       .doc("Velocity condition at wall particles."));
+  s.keys.push_back(Key("water.solver", T::String)
+                       .fallback("\"\"")
+                       .doc("Executable of the water solver; empty: the built-in fluid_solver."));
+
+  s.tables.push_back({"water.blocks[]", true, true,
+                      "Regions filled with water at t = 0 (needed when [water] exists). "
+                      "Particles sit on a lattice of spacing dp, half a spacing inside the region. "
+                      "Every block must lie inside the domain."});
+  s.keys.push_back(Key("water.blocks[].shape", T::String)
+                       .required()
+                       .one_of({"box", "polygon"})
+                       .doc("Kind of region."));
+  s.keys.push_back(Key("water.blocks[].min", T::Vector)
+                       .unit("m")
+                       .required()
+                       .only_when("shape", {"box"})
+                       .doc("Lower corner of the box."));
+  s.keys.push_back(Key("water.blocks[].max", T::Vector)
+                       .unit("m")
+                       .required()
+                       .only_when("shape", {"box"})
+                       .doc("Upper corner of the box; greater than min in every component."));
+  s.keys.push_back(Key("water.blocks[].vertices", T::VectorList)
+                       .unit("m")
+                       .required()
+                       .vector_length(2)
+                       .min_count(3)
+                       .only_when("shape", {"polygon"})
+                       .doc("Polygon corners [[x, y], ...] (2D only), closed implicitly."));
+  s.keys.push_back(Key("water.blocks[].label", T::String)
+                       .fallback("\"\"")
+                       .doc("Optional name shown in errors and output."));
+}
+
+void add_walls_and_observables(SceneSchema& s) {
+  s.tables.push_back({"walls[]", true, false,
+                      "Fixed wall particles, shared by every phase. Walls may extend outside the "
+                      "domain."});
+  s.keys.push_back(
+      Key("walls[].shape", T::String)
+          .required()
+          .one_of({"box", "polygon", "container"})
+          .doc("box / polygon: a filled region; container: a wall of `layers` particle "
+               "layers around the inner box [min, max]."));
+  s.keys.push_back(Key("walls[].min", T::Vector)
+                       .unit("m")
+                       .required()
+                       .only_when("shape", {"box", "container"})
+                       .doc("Lower corner of the box (container: of the inner box)."));
+  s.keys.push_back(Key("walls[].max", T::Vector)
+                       .unit("m")
+                       .required()
+                       .only_when("shape", {"box", "container"})
+                       .doc("Upper corner of the box (container: of the inner box); greater than "
+                            "min in every component."));
+  s.keys.push_back(Key("walls[].vertices", T::VectorList)
+                       .unit("m")
+                       .required()
+                       .vector_length(2)
+                       .min_count(3)
+                       .only_when("shape", {"polygon"})
+                       .doc("Polygon corners [[x, y], ...] (2D only), closed implicitly."));
+  s.keys.push_back(Key("walls[].layers", T::Int)
+                       .fallback("3")
+                       .at_least(1)
+                       .only_when("shape", {"container"})
+                       .doc("Wall thickness in particle layers."));
+  s.keys.push_back(Key("walls[].open_faces", T::StringList)
+                       .fallback("[]")
+                       .one_of({"x-", "x+", "y-", "y+", "z-", "z+"})
+                       .only_when("shape", {"container"})
+                       .doc("Faces of the container left open (z faces only in 3D)."));
+  s.keys.push_back(Key("walls[].label", T::String)
+                       .fallback("\"\"")
+                       .doc("Optional name shown in errors and output."));
+  s.keys.push_back(Key("walls[].remove_at", T::Float)
+                       .unit("s")
+                       .fallback("-1.0")
+                       .doc("Time at which the wall is removed; negative: never."));
+
+  s.tables.push_back({"observables[]", true, false,
+                      "Quantities measured on one phase at every output time and at the end "
+                      "(columns of timeseries.csv, values in run.json)."});
+  s.keys.push_back(Key("observables[].name", T::String)
+                       .required()
+                       .format(StringFormat::Identifier)
+                       .doc("Column name in timeseries.csv; unique among observables."));
+  s.keys.push_back(Key("observables[].kind", T::String)
+                       .required()
+                       .one_of({"front_position", "max_speed", "pressure_at", "kinetic_energy",
+                                "max_height", "particle_count"})
+                       .doc("What is measured over the phase's particles: front_position and "
+                            "max_height, the largest dot(x - origin, direction); max_speed, the "
+                            "largest speed; pressure_at, the pressure interpolated at point; "
+                            "kinetic_energy, the total kinetic energy; particle_count, the number "
+                            "of particles."));
+  s.keys.push_back(Key("observables[].phase", T::String)
+                       .fallback("\"water\"")
+                       .one_of({"water"})
+                       .doc("Phase measured; must be present in the scene."));
+  s.keys.push_back(Key("observables[].direction", T::Vector)
+                       .required()
+                       .only_when("kind", {"front_position", "max_height"})
+                       .doc("Direction of measurement; non-zero, normalised by the loader."));
+  s.keys.push_back(Key("observables[].origin", T::Vector)
+                       .unit("m")
+                       .fallback_per_dimension("[0.0, 0.0]", "[0.0, 0.0, 0.0]")
+                       .only_when("kind", {"front_position", "max_height"})
+                       .doc("Point the distance is measured from."));
+  s.keys.push_back(Key("observables[].point", T::Vector)
+                       .unit("m")
+                       .required()
+                       .only_when("kind", {"pressure_at"})
+                       .doc("Probe point."));
+}
+
+/// Part of `path` before its last '.', or "" when there is none.
+std::string parent_of(const std::string& path) {
+  const auto dot = path.rfind('.');
+  return dot == std::string::npos ? std::string() : path.substr(0, dot);
+}
+
+std::string last_segment(const std::string& path) {
+  const auto dot = path.rfind('.');
+  return dot == std::string::npos ? path : path.substr(dot + 1);
+}
+
+}  // namespace
+
+std::string KeySpec::name() const { return last_segment(path); }
+std::string KeySpec::table() const { return parent_of(path); }
+
+std::string TableSpec::header_name() const {
+  std::string out;
+  for (char c : path)
+    if (c != '[' && c != ']') out += c;
+  return out;
+}
+
+const TableSpec* SceneSchema::find_table(const std::string& path) const {
+  for (const auto& t : tables)
+    if (t.path == path) return &t;
+  return nullptr;
+}
+
+const KeySpec* SceneSchema::find_key(const std::string& path) const {
+  for (const auto& k : keys)
+    if (k.path == path) return &k;
+  return nullptr;
+}
+
+std::vector<std::string> SceneSchema::child_names(const std::string& path) const {
+  std::vector<std::string> names;
+  for (const auto& k : keys)
+    if (k.table() == path) names.push_back(k.name());
+  for (const auto& t : tables) {
+    if (parent_of(t.path) != path) continue;
+    std::string name = last_segment(t.path);
+    if (t.array) name = name.substr(0, name.size() - 2);  // drop "[]"
+    names.push_back(name);
+  }
+  return names;
+}
+
+SceneSchema make_scene_schema() {
+  SceneSchema schema;
+  add_scene_and_run(schema);
+  add_water(schema);
+  add_walls_and_observables(schema);
+  return schema;
+}
+
+std::string type_name(ValueType type) {
+  switch (type) {
+    case ValueType::Int:
+      return "int";
+    case ValueType::Float:
+      return "float";
+    case ValueType::Bool:
+      return "bool";
+    case ValueType::String:
+      return "string";
+    case ValueType::Vector:
+      return "vector";
+    case ValueType::VectorList:
+      return "list of vectors";
+    case ValueType::StringList:
+      return "list of strings";
+    case ValueType::BoolVector:
+      return "bool vector";
+  }
+  return "?";
+}
+
+}  // namespace porosph::scene
