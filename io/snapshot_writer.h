@@ -11,7 +11,13 @@
 
 namespace porosph::io {
 
-/// A read-only view of one per-particle field. Exactly one of the data pointers is set.
+/// Element type of a field's dataset: f64 -> H5T_NATIVE_DOUBLE, i64 -> H5T_NATIVE_INT64,
+/// u8 -> H5T_NATIVE_UINT8. `FromPointer` takes it from whichever data pointer is set.
+enum class FieldType { FromPointer, F64, I64, U8 };
+
+/// A read-only view of one per-particle field. Exactly one of the data pointers is set, except for
+/// an empty field (rows == 0), whose pointer may be null: then `type` must say what it holds (the
+/// field_view() helpers below always set it).
 struct FieldView {
   std::string name;
   std::size_t rows = 0;  ///< particles
@@ -19,7 +25,17 @@ struct FieldView {
   const double* f64 = nullptr;
   const std::int64_t* i64 = nullptr;
   const std::uint8_t* u8 = nullptr;
+  FieldType type = FieldType::FromPointer;
 };
+
+/// Views of a row-major array of rows x cols values (rows = values.size() / cols); they set `type`,
+/// so they also work for empty vectors. Throw std::runtime_error if values.size() % cols != 0.
+FieldView field_view(const std::string& name, const std::vector<double>& values,
+                     std::size_t cols = 1);
+FieldView field_view(const std::string& name, const std::vector<std::int64_t>& values,
+                     std::size_t cols = 1);
+FieldView field_view(const std::string& name, const std::vector<std::uint8_t>& values,
+                     std::size_t cols = 1);
 
 class SnapshotWriter {
  public:
@@ -30,6 +46,9 @@ class SnapshotWriter {
   SnapshotWriter& operator=(const SnapshotWriter&) = delete;
 
   /// Writes /snapshots/<index>/ with attribute time and one dataset per field, then flushes.
+  /// Dataset shape: (rows) if cols == 1 else (rows, cols); rows may be 0. All fields are validated
+  /// before anything is written. Throws std::runtime_error naming the file (and the field) if a
+  /// field is malformed, the index was already written, or HDF5 fails.
   void write(std::uint32_t index, double time, const std::vector<FieldView>& fields);
 
   const std::string& path() const;

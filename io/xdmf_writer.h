@@ -10,7 +10,7 @@ namespace porosph::io {
 
 struct XdmfField {
   std::string name;
-  std::size_t cols = 1;         ///< 1 scalar; D vector; 9 tensor (row-major 3x3)
+  std::size_t cols = 1;               ///< 1 scalar; D vector; 9 tensor (row-major 3x3)
   std::string number_type = "Float";  ///< "Float" (8 bytes) | "Int" (8 bytes) | "UChar"
 };
 
@@ -30,7 +30,10 @@ struct XdmfPhaseSeries {
 };
 
 /// Writes the XDMF file atomically (temp file + rename). Snapshots of all phases are grouped by
-/// output index; a phase missing an index is left out of that time step.
+/// output index; a phase missing an index is left out of that time step. A field named "position"
+/// is skipped (it is the Geometry). h5_file is written as given, so give it relative to the XDMF
+/// file's folder. Throws std::runtime_error naming the path on invalid input (dimension not 2 or 3,
+/// unknown number_type, cols 0) - then an existing file is left unchanged - or if writing fails.
 void write_xdmf(const std::string& path, const std::vector<XdmfPhaseSeries>& phases);
 
 }  // namespace porosph::io

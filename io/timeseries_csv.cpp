@@ -1,0 +1,68 @@
+#include "io/timeseries_csv.h"
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+#include <utility>
+
+namespace porosph::io {
+
+namespace {
+
+std::string csv_quoted(const std::string& name) {
+  if (name.find_first_of(",\"\r\n") == std::string::npos) return name;
+  std::string out = "\"";
+  for (char c : name) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  return out + "\"";
+}
+
+}  // namespace
+
+TimeSeriesCsv::TimeSeriesCsv(const std::string& path, std::vector<std::string> columns)
+    : path_(path), columns_(std::move(columns)) {
+  if (columns_.empty()) {
+    throw std::runtime_error("TimeSeriesCsv('" + path_ + "'): no columns");
+  }
+  file_.reset(std::fopen(path_.c_str(), "w"));
+  if (!file_) {
+    throw std::runtime_error("TimeSeriesCsv: cannot create '" + path_ +
+                             "': " + std::strerror(errno));
+  }
+  std::string header;
+  for (std::size_t i = 0; i < columns_.size(); ++i) {
+    if (i > 0) header += ',';
+    header += csv_quoted(columns_[i]);
+  }
+  header += '\n';
+  write_or_throw(header);
+}
+
+void TimeSeriesCsv::append(const std::vector<double>& row) {
+  if (row.size() != columns_.size()) {
+    throw std::runtime_error("TimeSeriesCsv('" + path_ + "'): row has " +
+                             std::to_string(row.size()) + " values, header has " +
+                             std::to_string(columns_.size()) + " columns");
+  }
+  line_.clear();
+  char number[32];
+  for (std::size_t i = 0; i < row.size(); ++i) {
+    if (i > 0) line_ += ',';
+    std::snprintf(number, sizeof number, "%.10g", row[i]);
+    line_ += number;
+  }
+  line_ += '\n';
+  write_or_throw(line_);
+}
+
+void TimeSeriesCsv::write_or_throw(const std::string& text) {
+  if (std::fwrite(text.data(), 1, text.size(), file_.get()) != text.size() ||
+      std::fflush(file_.get()) != 0) {
+    throw std::runtime_error("TimeSeriesCsv: cannot write '" + path_ +
+                             "': " + std::strerror(errno));
+  }
+}
+
+}  // namespace porosph::io
