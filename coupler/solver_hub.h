@@ -32,7 +32,8 @@ struct Incoming {
 
 class SolverHub {
  public:
-  /// Binds a ROUTER socket to `endpoint` ("ipc://..." or "tcp://*:port"). Throws std::runtime_error.
+  /// Binds a ROUTER socket to `endpoint` ("ipc://..." or "tcp://*:port"). Throws
+  /// std::runtime_error.
   explicit SolverHub(const std::string& endpoint);
   ~SolverHub();
   SolverHub(const SolverHub&) = delete;
@@ -42,13 +43,22 @@ class SolverHub {
   std::string connect_endpoint() const;
 
   /// Waits up to `timeout_seconds` for one message from any solver. Returns false on timeout.
-  /// A Hello registers the sender's phase; messages from a peer that never said Hello are dropped.
+  /// A Hello registers the sender's phase; messages from a peer that never said Hello (or whose
+  /// Hello was refused with send_error) are dropped. A frame that does not parse as an Envelope
+  /// from a registered peer arrives as an Error ("protocol violation by the <phase> solver: ...").
   bool receive(Incoming& out, double timeout_seconds);
 
+  /// Answers the latest Hello of `phase` with the Setup; that solver becomes the phase's solver
+  /// (replacing an earlier one, whose messages are dropped from then on).
   void send_setup(const std::string& phase, const coupling::SetupData& setup);
+  /// To the phase's solver (the one that got the Setup). Throws std::runtime_error if there is
+  /// none, or if the solver has disconnected (ROUTER_MANDATORY: nothing is dropped silently).
   void send_command(const std::string& phase, const coupling::StepCommand& command);
-  /// Refuses a Hello (e.g. protocol version mismatch) or reports a coupler-side failure.
+  /// Refuses a Hello (e.g. protocol version mismatch) or reports a coupler-side failure. Goes to
+  /// the unanswered Hello of `phase` if there is one (so a stray second solver is refused without
+  /// disturbing the running one), else to the phase's solver.
   void send_error(const std::string& phase, const std::string& message);
+  /// To the phase's solver, or to a solver whose Hello was not answered yet.
   void send_shutdown(const std::string& phase, const std::string& reason);
 
   /// Seconds spent serialising, sending and parsing (excluding waiting).

@@ -1,10 +1,13 @@
 // A solver child process started by the coupler. The child gets PR_SET_PDEATHSIG (it dies if the
 // coupler dies), its own process group, and POROSPH_ENDPOINT in its environment. The destructor
-// terminates and reaps it, so no solver outlives the coupler.
+// terminates and reaps it, so no solver outlives the coupler. Start solvers from a thread that
+// lives as long as the run (the main thread): PR_SET_PDEATHSIG fires when the *thread* that forked
+// exits, not only when the coupler process does.
 #pragma once
 
-#include <string>
 #include <sys/types.h>
+
+#include <string>
 #include <vector>
 
 namespace porosph::coupler {
@@ -30,6 +33,10 @@ class SolverProcess {
   void terminate(double grace_seconds = 2.0);
 
  private:
+  /// Reaps the child if it has exited (waiting for that if `block`), after killing whatever is left
+  /// in its process group. True if this call saw it exit.
+  bool reap_if_exited(bool block);
+
   pid_t pid_ = -1;
   bool exited_ = false;
   int status_ = 0;

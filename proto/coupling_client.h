@@ -20,6 +20,9 @@ struct SolverIdentity {
   std::string phase;  ///< "water" | "soil"
   std::string name;   ///< e.g. "porosph-fluid"
   std::string version;
+  /// Announced in Hello. Leave it at kProtocolVersion; the test dummies override it to exercise the
+  /// coupler's version check.
+  std::uint32_t protocol_version = kProtocolVersion;
 };
 
 /// What the coupler tells a solver before the first step.
@@ -50,7 +53,7 @@ struct StepState {
   double dt_limit = 0, dt_cfl = 0, dt_viscous = 0, dt_force = 0;
   std::vector<std::int64_t> overlap_id;
   std::vector<double> overlap_position, overlap_velocity, overlap_density, overlap_mass;
-  std::vector<double> overlap_porosity;       ///< soil only
+  std::vector<double> overlap_porosity;        ///< soil only
   std::vector<std::int32_t> overlap_material;  ///< soil only
   std::vector<double> region_min, region_max;
   Diagnostics diagnostics;
@@ -100,7 +103,8 @@ class CouplingClient {
   void report_error(const std::string& message, std::uint64_t step, double time,
                     std::int64_t particle_id = -1) noexcept;
 
-  /// Sends Goodbye with the timing figures; call after a command with stop = true.
+  /// Sends Goodbye with the timing figures; call after a command with stop = true. A zero
+  /// `timing.communication_seconds` is replaced by communication_seconds().
   void finalize(const Timing& timing);
 
   /// Seconds spent inside exchange() (serialising, ZeroMQ, waiting for the coupler).

@@ -1,0 +1,279 @@
+// The coupler's ROUTER socket. A DEALER's message arrives as two frames: [peer routing
+// id][Envelope].
+#include "coupler/solver_hub.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <functional>
+#include <map>
+#include <stdexcept>
+#include <string_view>
+#include <zmq.hpp>
+
+#include "proto/porosph.pb.h"
+#include "proto/wire_convert.h"
+
+namespace porosph::coupler {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// On shutdown the coupler waits at most this long to deliver its last messages.
+constexpr int kLingerMilliseconds = 1000;
+/// A send blocks only if a solver stopped reading with many messages queued; give up after this.
+constexpr int kSendTimeoutMilliseconds = 10000;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+/// "tcp://0.0.0.0:PORT" / "tcp://*:PORT" -> "tcp://127.0.0.1:PORT"; other endpoints unchanged.
+std::string connectable(std::string endpoint) {
+  for (const std::string_view wildcard : {"tcp://0.0.0.0:", "tcp://*:"}) {
+    if (endpoint.compare(0, wildcard.size(), wildcard) == 0) {
+      return "tcp://127.0.0.1:" + endpoint.substr(wildcard.size());
+    }
+  }
+  return endpoint;
+}
+
+std::string_view view(const zmq::message_t& frame) {
+  return {static_cast<const char*>(frame.data()), frame.size()};
+}
+
+}  // namespace
+
+struct SolverHub::Impl {
+  zmq::context_t context;  // declared first: destroyed after the socket
+  zmq::socket_t socket{context, zmq::socket_type::router};
+  std::string connect_endpoint;
+  std::string ipc_path;  // socket file of an ipc:// endpoint; libzmq 4.3 leaves it behind
+  // Peers are ZeroMQ routing ids. phase_of_peer: every solver that said Hello and was not refused.
+  // Per phase: the solver that got a Setup (active) and one whose Hello awaits an answer (pending),
+  // so a stray second Hello for a running phase can be refused without losing the running solver.
+  std::map<std::string, std::string, std::less<>> phase_of_peer;
+  std::map<std::string, std::string> active_peer;
+  std::map<std::string, std::string> pending_peer;
+  // Reused for every message: repeated fields, vectors and strings keep their capacity.
+  wire::Envelope incoming;        // any body except states
+  wire::StepState state_message;  // states: parsed here, keeping the arrays' capacity
+  wire::Envelope outgoing;
+  zmq::message_t peer_frame;
+  zmq::message_t payload_frame;
+  std::string send_buffer;
+  double codec_seconds = 0;
+
+  /// Waits until a message is readable or the deadline passes (signals do not cut the wait short).
+  bool wait_readable(Clock::time_point deadline) {
+    for (;;) {
+      zmq::pollitem_t item{socket.handle(), 0, ZMQ_POLLIN, 0};
+      const auto left =
+          std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+      try {
+        return zmq::poll(&item, 1, std::max(left, std::chrono::milliseconds(0))) > 0;
+      } catch (const zmq::error_t& e) {
+        if (e.num() != EINTR) throw std::runtime_error(std::string("zmq poll failed: ") + e.what());
+      }
+    }
+  }
+
+  ~Impl() {
+    socket.close();
+    if (!ipc_path.empty()) ::unlink(ipc_path.c_str());
+  }
+
+  enum class Frames { None, WellFormed, Malformed };
+  /// Reads one [peer][payload] message into peer_frame / payload_frame.
+  Frames read_frames() {
+    if (!socket.recv(peer_frame, zmq::recv_flags::dontwait) || !peer_frame.more()) {
+      return Frames::None;
+    }
+    (void)socket.recv(payload_frame, zmq::recv_flags::none);
+    Frames result = Frames::WellFormed;
+    while (payload_frame.more()) {  // our DEALERs send one frame; drain anything longer
+      result = Frames::Malformed;
+      (void)socket.recv(payload_frame, zmq::recv_flags::none);
+    }
+    return result;
+  }
+
+  void register_hello(std::string_view peer, const std::string& phase) {
+    phase_of_peer[std::string(peer)] = phase;
+    pending_peer[phase] = std::string(peer);
+  }
+
+  /// The peer a message for `phase` goes to: the pending one first if `answer_to_hello`, else the
+  /// active one first. Throws if the phase has neither.
+  std::string peer_for(const std::string& phase, bool answer_to_hello) const {
+    const auto& first = answer_to_hello ? pending_peer : active_peer;
+    const auto& second = answer_to_hello ? active_peer : pending_peer;
+    if (auto it = first.find(phase); it != first.end()) return it->second;
+    if (auto it = second.find(phase); it != second.end()) return it->second;
+    throw std::runtime_error("cannot send to the " + phase + " solver: none has said Hello");
+  }
+
+  /// After the pending Hello of `phase` was answered: accepted (Setup) or refused (Error).
+  void settle_pending(const std::string& phase, const std::string& peer, bool accepted) {
+    if (auto it = pending_peer.find(phase); it != pending_peer.end() && it->second == peer) {
+      pending_peer.erase(it);
+    }
+    const auto active = active_peer.find(phase);
+    if (accepted) {
+      if (active != active_peer.end() && active->second != peer) {
+        phase_of_peer.erase(active->second);  // replaced: the old solver's messages are dropped
+      }
+      active_peer[phase] = peer;
+    } else if (active == active_peer.end() || active->second != peer) {
+      phase_of_peer.erase(peer);  // refused: its further messages are dropped
+    }
+  }
+
+  void send_outgoing(const std::string& peer, const std::string& phase) {
+    const auto start = Clock::now();
+    outgoing.SerializeToString(&send_buffer);
+    try {
+      if (!socket.send(zmq::buffer(peer), zmq::send_flags::sndmore) ||
+          !socket.send(zmq::buffer(send_buffer), zmq::send_flags::none)) {
+        throw std::runtime_error("cannot send to the " + phase + " solver: it stopped reading");
+      }
+    } catch (const zmq::error_t& e) {
+      if (e.num() == EHOSTUNREACH) {
+        throw std::runtime_error("cannot send to the " + phase + " solver: it disconnected");
+      }
+      throw std::runtime_error("cannot send to the " + phase + " solver: " + e.what());
+    }
+    codec_seconds += seconds_since(start);
+  }
+};
+
+SolverHub::SolverHub(const std::string& endpoint) : impl_(std::make_unique<Impl>()) {
+  Impl& d = *impl_;
+  try {
+    d.socket.set(zmq::sockopt::linger, kLingerMilliseconds);
+    d.socket.set(zmq::sockopt::router_mandatory, true);
+    d.socket.set(zmq::sockopt::sndtimeo, kSendTimeoutMilliseconds);
+    d.socket.bind(endpoint);
+    d.connect_endpoint = connectable(d.socket.get(zmq::sockopt::last_endpoint));
+  } catch (const zmq::error_t& e) {
+    throw std::runtime_error("cannot listen for solvers on '" + endpoint + "': " + e.what());
+  }
+  const std::string ipc = "ipc://";
+  if (d.connect_endpoint.compare(0, ipc.size(), ipc) == 0 &&
+      d.connect_endpoint.compare(ipc.size(), 1, "@") != 0) {
+    d.ipc_path = d.connect_endpoint.substr(ipc.size());  // not for abstract sockets (ipc://@name)
+  }
+}
+
+SolverHub::~SolverHub() = default;
+
+std::string SolverHub::connect_endpoint() const { return impl_->connect_endpoint; }
+
+bool SolverHub::receive(Incoming& out, double timeout_seconds) {
+  Impl& d = *impl_;
+  const auto deadline =
+      Clock::now() + std::chrono::milliseconds(static_cast<long>(timeout_seconds * 1000.0 + 0.5));
+  while (d.wait_readable(deadline)) {
+    const Impl::Frames frames = d.read_frames();
+    if (frames == Impl::Frames::None) continue;
+    const auto start = Clock::now();
+    const std::string_view peer = view(d.peer_frame);
+    wire::Envelope::BodyCase body = wire::Envelope::BODY_NOT_SET;
+    const bool parsed = frames == Impl::Frames::WellFormed &&
+                        wire::parse_envelope(d.payload_frame.data(), d.payload_frame.size(),
+                                             d.state_message, d.incoming, body);
+    if (parsed && body == wire::Envelope::kHello) {
+      const wire::Hello& hello = d.incoming.hello();
+      d.register_hello(peer, hello.phase());
+      out.kind = Incoming::Kind::Hello;
+      out.phase = hello.phase();
+      out.solver_name = hello.solver_name();
+      out.solver_version = hello.solver_version();
+      out.protocol_version = hello.protocol_version();
+      out.pid = hello.pid();
+      d.codec_seconds += seconds_since(start);
+      return true;
+    }
+    const auto known = d.phase_of_peer.find(peer);
+    if (known == d.phase_of_peer.end()) continue;  // a peer that never said Hello: drop
+    out.phase = known->second;
+    const auto protocol_error = [&out](const std::string& what) {
+      out.kind = Incoming::Kind::Error;
+      out.error_message = "protocol violation by the " + out.phase + " solver: " + what;
+      out.error_step = 0;
+      out.error_time = 0;
+      out.error_particle_id = -1;
+    };
+    if (!parsed) {
+      protocol_error("malformed message");
+    } else {
+      switch (body) {
+        case wire::Envelope::kState:
+          out.kind = Incoming::Kind::State;
+          wire::from_wire(d.state_message, out.state);
+          break;
+        case wire::Envelope::kError: {
+          const wire::Error& error = d.incoming.error();
+          out.kind = Incoming::Kind::Error;
+          out.error_message = error.message();
+          out.error_step = error.step();
+          out.error_time = error.time();
+          out.error_particle_id = error.particle_id();
+          break;
+        }
+        case wire::Envelope::kGoodbye:
+          out.kind = Incoming::Kind::Goodbye;
+          wire::from_wire(d.incoming.goodbye(), out.timing);
+          break;
+        default:
+          protocol_error("unexpected message type " + std::to_string(static_cast<int>(body)));
+      }
+    }
+    d.codec_seconds += seconds_since(start);
+    return true;
+  }
+  return false;
+}
+
+void SolverHub::send_setup(const std::string& phase, const coupling::SetupData& setup) {
+  const std::string peer = impl_->peer_for(phase, true);
+  wire::Setup& message = *impl_->outgoing.mutable_setup();
+  message.set_protocol_version(coupling::kProtocolVersion);
+  wire::to_wire(setup, message);
+  impl_->send_outgoing(peer, phase);
+  impl_->settle_pending(phase, peer, true);
+}
+
+void SolverHub::send_command(const std::string& phase, const coupling::StepCommand& command) {
+  const auto active = impl_->active_peer.find(phase);
+  if (active == impl_->active_peer.end()) {
+    throw std::runtime_error("cannot send a command to the " + phase + " solver: it has no Setup");
+  }
+  const auto start = Clock::now();
+  wire::to_wire(command, *impl_->outgoing.mutable_command());
+  impl_->codec_seconds += seconds_since(start);
+  impl_->send_outgoing(active->second, phase);
+}
+
+void SolverHub::send_error(const std::string& phase, const std::string& message) {
+  const std::string peer = impl_->peer_for(phase, true);
+  wire::Error& error = *impl_->outgoing.mutable_error();
+  error.set_phase("coupler");
+  error.set_message(message);
+  error.set_step(0);
+  error.set_time(0);
+  error.set_particle_id(-1);
+  impl_->send_outgoing(peer, phase);
+  impl_->settle_pending(phase, peer, false);
+}
+
+void SolverHub::send_shutdown(const std::string& phase, const std::string& reason) {
+  impl_->outgoing.mutable_shutdown()->set_reason(reason);
+  impl_->send_outgoing(impl_->peer_for(phase, false), phase);
+}
+
+double SolverHub::codec_seconds() const { return impl_->codec_seconds; }
+
+}  // namespace porosph::coupler

@@ -1,0 +1,247 @@
+#include "proto/wire_convert.h"
+
+#include <google/protobuf/io/coded_stream.h>
+#include <google/protobuf/wire_format_lite.h>
+
+#include <iterator>
+#include <limits>
+
+namespace porosph::wire {
+namespace {
+
+template <typename T, typename Vec>
+void assign(google::protobuf::RepeatedField<T>* out, const Vec& in) {
+  out->Assign(in.begin(), in.end());
+}
+
+template <typename T, typename Vec>
+void assign(Vec& out, const google::protobuf::RepeatedField<T>& in) {
+  out.assign(in.begin(), in.end());
+}
+
+void to_wire(const coupling::Diagnostics& in, Diagnostics& out) {
+  out.set_particle_count(in.particle_count);
+  out.set_free_count(in.free_count);
+  out.set_removed_count(in.removed_count);
+  out.set_mass(in.mass);
+  out.set_kinetic_energy(in.kinetic_energy);
+  out.set_max_speed(in.max_speed);
+  out.set_physics_seconds(in.physics_seconds);
+  assign(out.mutable_momentum(), in.momentum);
+  auto& observables = *out.mutable_observables();
+  // Update in place (no node churn when the names stay the same), then drop stale names.
+  for (const auto& [name, value] : in.observables) observables[name] = value;
+  if (static_cast<std::size_t>(observables.size()) != in.observables.size()) {
+    for (auto it = observables.begin(); it != observables.end();) {
+      it = in.observables.count(it->first) ? std::next(it) : observables.erase(it);
+    }
+  }
+}
+
+void from_wire(const Diagnostics& in, coupling::Diagnostics& out) {
+  out.particle_count = in.particle_count();
+  out.free_count = in.free_count();
+  out.removed_count = in.removed_count();
+  out.mass = in.mass();
+  out.kinetic_energy = in.kinetic_energy();
+  out.max_speed = in.max_speed();
+  out.physics_seconds = in.physics_seconds();
+  assign(out.momentum, in.momentum());
+  for (const auto& [name, value] : in.observables()) {
+    auto it = out.observables.find(name);
+    if (it != out.observables.end()) {
+      it->second = value;
+    } else {
+      out.observables.emplace(name, value);
+    }
+  }
+  if (out.observables.size() != static_cast<std::size_t>(in.observables().size())) {
+    for (auto it = out.observables.begin(); it != out.observables.end();) {
+      it = in.observables().count(it->first) ? std::next(it) : out.observables.erase(it);
+    }
+  }
+}
+
+const google::protobuf::MessageLite& body_message(const Envelope& envelope) {
+  switch (envelope.body_case()) {
+    case Envelope::kHello:
+      return envelope.hello();
+    case Envelope::kSetup:
+      return envelope.setup();
+    case Envelope::kState:
+      return envelope.state();
+    case Envelope::kCommand:
+      return envelope.command();
+    case Envelope::kError:
+      return envelope.error();
+    case Envelope::kGoodbye:
+      return envelope.goodbye();
+    case Envelope::kShutdown:
+      return envelope.shutdown();
+    default:
+      return envelope;
+  }
+}
+
+}  // namespace
+
+namespace {
+
+/// Clear() without freeing sub-messages: a parse merges into the same objects again.
+void clear_keeping_storage(StepState& message) {
+  Diagnostics* diagnostics = message.has_diagnostics() ? message.release_diagnostics() : nullptr;
+  message.Clear();
+  if (diagnostics != nullptr) {
+    diagnostics->Clear();
+    message.set_allocated_diagnostics(diagnostics);
+  }
+}
+void clear_keeping_storage(StepCommand& message) { message.Clear(); }
+
+template <typename Hot>
+bool parse_envelope_into(const void* data, std::size_t size, int hot_field, Hot& hot,
+                         Envelope& envelope, Envelope::BodyCase& body) {
+  using google::protobuf::internal::WireFormatLite;
+  if (size > static_cast<std::size_t>(std::numeric_limits<int>::max())) return false;
+  const auto* bytes = static_cast<const std::uint8_t*>(data);
+  const int total = static_cast<int>(size);
+  // Our senders write exactly one field: the oneof body. Read its tag and length; anything else
+  // (e.g. a foreign sender adding unknown fields) takes the general path below.
+  google::protobuf::io::CodedInputStream in(bytes, total);
+  const std::uint32_t tag = in.ReadTag();
+  std::uint32_t length = 0;
+  if (WireFormatLite::GetTagFieldNumber(tag) == hot_field &&
+      WireFormatLite::GetTagWireType(tag) == WireFormatLite::WIRETYPE_LENGTH_DELIMITED &&
+      in.ReadVarint32(&length) && in.CurrentPosition() + std::int64_t{length} == total) {
+    body = static_cast<Envelope::BodyCase>(hot_field);
+    clear_keeping_storage(hot);
+    google::protobuf::io::CodedInputStream body_bytes(bytes + in.CurrentPosition(),
+                                                      static_cast<int>(length));
+    return hot.MergeFromCodedStream(&body_bytes) && body_bytes.ConsumedEntireMessage();
+  }
+  if (!envelope.ParseFromArray(bytes, total)) return false;
+  body = envelope.body_case();
+  if (body == hot_field) {  // rare: the hot body came with extra fields
+    clear_keeping_storage(hot);
+    hot.MergeFrom(static_cast<const Hot&>(body_message(envelope)));
+  }
+  return true;
+}
+
+}  // namespace
+
+bool parse_envelope(const void* data, std::size_t size, StepState& hot, Envelope& envelope,
+                    Envelope::BodyCase& body) {
+  return parse_envelope_into(data, size, Envelope::kStateFieldNumber, hot, envelope, body);
+}
+
+bool parse_envelope(const void* data, std::size_t size, StepCommand& hot, Envelope& envelope,
+                    Envelope::BodyCase& body) {
+  return parse_envelope_into(data, size, Envelope::kCommandFieldNumber, hot, envelope, body);
+}
+
+void to_wire(const coupling::StepState& in, StepState& out) {
+  out.set_step(in.step);
+  out.set_time(in.time);
+  out.set_dt_limit(in.dt_limit);
+  out.set_dt_cfl(in.dt_cfl);
+  out.set_dt_viscous(in.dt_viscous);
+  out.set_dt_force(in.dt_force);
+  assign(out.mutable_overlap_id(), in.overlap_id);
+  assign(out.mutable_overlap_position(), in.overlap_position);
+  assign(out.mutable_overlap_velocity(), in.overlap_velocity);
+  assign(out.mutable_overlap_density(), in.overlap_density);
+  assign(out.mutable_overlap_mass(), in.overlap_mass);
+  assign(out.mutable_overlap_porosity(), in.overlap_porosity);
+  assign(out.mutable_overlap_material(), in.overlap_material);
+  assign(out.mutable_region_min(), in.region_min);
+  assign(out.mutable_region_max(), in.region_max);
+  to_wire(in.diagnostics, *out.mutable_diagnostics());
+}
+
+void from_wire(const StepState& in, coupling::StepState& out) {
+  out.step = in.step();
+  out.time = in.time();
+  out.dt_limit = in.dt_limit();
+  out.dt_cfl = in.dt_cfl();
+  out.dt_viscous = in.dt_viscous();
+  out.dt_force = in.dt_force();
+  assign(out.overlap_id, in.overlap_id());
+  assign(out.overlap_position, in.overlap_position());
+  assign(out.overlap_velocity, in.overlap_velocity());
+  assign(out.overlap_density, in.overlap_density());
+  assign(out.overlap_mass, in.overlap_mass());
+  assign(out.overlap_porosity, in.overlap_porosity());
+  assign(out.overlap_material, in.overlap_material());
+  assign(out.region_min, in.region_min());
+  assign(out.region_max, in.region_max());
+  from_wire(in.diagnostics(), out.diagnostics);
+}
+
+void to_wire(const coupling::StepCommand& in, StepCommand& out) {
+  out.set_step(in.step);
+  out.set_time(in.time);
+  out.set_dt(in.dt);
+  out.set_write_output(in.write_output);
+  out.set_output_index(in.output_index);
+  out.set_stop(in.stop);
+  assign(out.mutable_interaction_acceleration(), in.interaction_acceleration);
+  assign(out.mutable_saturation(), in.saturation);
+  assign(out.mutable_other_region_min(), in.other_region_min);
+  assign(out.mutable_other_region_max(), in.other_region_max);
+}
+
+void from_wire(const StepCommand& in, coupling::StepCommand& out) {
+  out.step = in.step();
+  out.time = in.time();
+  out.dt = in.dt();
+  out.write_output = in.write_output();
+  out.output_index = in.output_index();
+  out.stop = in.stop();
+  assign(out.interaction_acceleration, in.interaction_acceleration());
+  assign(out.saturation, in.saturation());
+  assign(out.other_region_min, in.other_region_min());
+  assign(out.other_region_max, in.other_region_max());
+}
+
+void to_wire(const coupling::SetupData& in, Setup& out) {
+  out.set_phase(in.phase);
+  out.set_scene_toml(in.scene_toml);
+  out.set_scene_name(in.scene_name);
+  out.set_output_dir(in.output_dir);
+  out.set_dimension(static_cast<std::uint32_t>(in.dimension));
+  out.set_dp(in.dp);
+  out.set_h(in.h);
+  out.set_dt0(in.dt0);
+  out.set_end_time(in.end_time);
+  assign(out.mutable_gravity(), in.gravity);
+  out.set_timeout_seconds(in.timeout_seconds);
+}
+
+void from_wire(const Setup& in, coupling::SetupData& out) {
+  out.phase = in.phase();
+  out.scene_toml = in.scene_toml();
+  out.scene_name = in.scene_name();
+  out.output_dir = in.output_dir();
+  out.dimension = static_cast<int>(in.dimension());
+  out.dp = in.dp();
+  out.h = in.h();
+  out.dt0 = in.dt0();
+  out.end_time = in.end_time();
+  assign(out.gravity, in.gravity());
+  out.timeout_seconds = in.timeout_seconds();
+}
+
+void to_wire(const coupling::Timing& in, Goodbye& out) {
+  out.set_wall_seconds(in.wall_seconds);
+  out.set_physics_seconds(in.physics_seconds);
+  out.set_communication_seconds(in.communication_seconds);
+}
+
+void from_wire(const Goodbye& in, coupling::Timing& out) {
+  out.wall_seconds = in.wall_seconds();
+  out.physics_seconds = in.physics_seconds();
+  out.communication_seconds = in.communication_seconds();
+}
+
+}  // namespace porosph::wire
