@@ -1,0 +1,240 @@
+#include "coupler/coupled_step.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace porosph::coupler {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+const char* axis_name(int k) { return k == 0 ? "x" : k == 1 ? "y" : "z"; }
+
+}  // namespace
+
+CoupledStepLoop::CoupledStepLoop(const scene::Scene& scene, SolverHub& hub, RunRecord& record,
+                                 const std::string& out_dir, std::function<void()> check_alive,
+                                 std::function<void()> write_outputs)
+    : scene_(scene),
+      hub_(hub),
+      record_(record),
+      check_alive_(std::move(check_alive)),
+      write_outputs_(std::move(write_outputs)),
+      phases_(scene.phases()),
+      controller_(scene.run.dt0, scene.run.dt_smoothing) {
+  timeseries_ = std::make_unique<io::TimeSeriesCsv>(out_dir + "/timeseries.csv",
+                                                    timeseries_columns());
+}
+
+std::vector<std::string> CoupledStepLoop::timeseries_columns() const {
+  std::vector<std::string> columns = {"t", "dt"};
+  for (const std::string& phase : phases_) {
+    columns.push_back(phase + "_kinetic_energy");
+    for (int k = 0; k < scene_.run.dimension; ++k) {
+      columns.push_back(phase + "_momentum_" + axis_name(k));
+    }
+    columns.push_back(phase + "_mass");
+    columns.push_back(phase + "_particles");
+    columns.push_back(phase + "_removed");
+    columns.push_back(phase + "_overlap");
+  }
+  for (const auto& observable : scene_.observables) columns.push_back(observable.name);
+  return columns;
+}
+
+void CoupledStepLoop::collect_states() {
+  std::map<std::string, bool> received;
+  const double timeout = scene_.run.solver_timeout;
+  auto last_heard = Clock::now();
+  Incoming in;
+  while (received.size() < phases_.size()) {
+    check_alive_();
+    if (!hub_.receive(in, std::min(0.2, timeout))) {
+      if (seconds_since(last_heard) > timeout) {
+        std::string silent;
+        for (const auto& phase : phases_) {
+          if (!received.count(phase)) silent += (silent.empty() ? "" : ", ") + phase;
+        }
+        std::ostringstream msg;
+        msg << "the " << silent << " solver did not answer within " << timeout
+            << " s (run.solver_timeout) at step " << record_.steps << ", t = " << record_.time
+            << " s";
+        throw std::runtime_error(msg.str());
+      }
+      continue;
+    }
+    last_heard = Clock::now();
+    switch (in.kind) {
+      case Incoming::Kind::State:
+        absorb_state(in.phase, in.state);
+        received[in.phase] = true;
+        break;
+      case Incoming::Kind::Error: {
+        std::ostringstream msg;
+        msg << "the " << in.phase << " solver failed at step " << in.error_step
+            << ", t = " << in.error_time << " s";
+        if (in.error_particle_id >= 0) msg << ", particle " << in.error_particle_id;
+        msg << ": " << in.error_message;
+        throw std::runtime_error(msg.str());
+      }
+      case Incoming::Kind::Goodbye:
+        throw std::runtime_error("the " + in.phase + " solver left before the end of the run");
+      case Incoming::Kind::Hello:
+        hub_.send_error(in.phase, "unexpected hello: a " + in.phase + " solver is already running");
+        break;
+    }
+  }
+}
+
+void CoupledStepLoop::absorb_state(const std::string& phase, const coupling::StepState& state) {
+  const double tolerance = 1e-9 * std::max(1.0, std::abs(record_.time));
+  if (std::abs(state.time - record_.time) > tolerance) {
+    std::ostringstream msg;
+    msg << "the " << phase << " solver is at t = " << state.time << " s, the coupler at t = "
+        << record_.time << " s: the solver did not advance by the shared dt";
+    throw std::runtime_error(msg.str());
+  }
+  const auto& d = state.diagnostics;
+  if (!std::isfinite(d.kinetic_energy) || !std::isfinite(d.mass) || !(state.dt_limit > 0)) {
+    std::ostringstream msg;
+    msg << "the " << phase << " solver reported a non-finite state at step " << record_.steps
+        << ", t = " << record_.time << " s (kinetic energy " << d.kinetic_energy << ", mass "
+        << d.mass << ", dt limit " << state.dt_limit << ")";
+    throw std::runtime_error(msg.str());
+  }
+  states_[phase] = state;
+  PhaseRecord& phase_record = record_.phases[phase];
+  if (record_.steps == 0) phase_record.initial = d;
+  phase_record.last = d;
+  phase_record.physics_seconds += d.physics_seconds;
+  for (const auto& observable : scene_.observables) {
+    if (observable.phase != phase) continue;
+    const auto it = d.observables.find(observable.name);
+    record_.observables[observable.name] =
+        it == d.observables.end() ? std::numeric_limits<double>::quiet_NaN() : it->second;
+  }
+}
+
+void CoupledStepLoop::append_timeseries_row(double dt) {
+  row_.assign({record_.time, dt});
+  for (const std::string& phase : phases_) {
+    const auto& state = states_.at(phase);
+    const auto& d = state.diagnostics;
+    row_.push_back(d.kinetic_energy);
+    for (int k = 0; k < scene_.run.dimension; ++k) {
+      row_.push_back(k < static_cast<int>(d.momentum.size()) ? d.momentum[k] : 0.0);
+    }
+    row_.push_back(d.mass);
+    row_.push_back(static_cast<double>(d.particle_count));
+    row_.push_back(static_cast<double>(d.removed_count));
+    row_.push_back(static_cast<double>(state.overlap_id.size()));
+  }
+  for (const auto& observable : scene_.observables) {
+    row_.push_back(record_.observables[observable.name]);
+  }
+  timeseries_->append(row_);
+}
+
+void CoupledStepLoop::send_commands(double dt, bool write_output, std::uint32_t output_index,
+                                    bool stop) {
+  for (const std::string& phase : phases_) {
+    coupling::StepCommand& command = commands_[phase];
+    command.step = record_.steps;
+    command.time = record_.time;
+    command.dt = dt;
+    command.write_output = write_output;
+    command.output_index = output_index;
+    command.stop = stop;
+    // Interaction accelerations, saturation and the overlap zone come with the soil-water
+    // interaction; a scene with a single phase exchanges none (DESIGN.md section 1).
+    command.interaction_acceleration.clear();
+    command.saturation.clear();
+    command.other_region_min.clear();
+    command.other_region_max.clear();
+    hub_.send_command(phase, command);
+  }
+}
+
+void CoupledStepLoop::wait_for_goodbyes() {
+  std::map<std::string, bool> said;
+  const auto start = Clock::now();
+  Incoming in;
+  while (said.size() < phases_.size()) {
+    if (seconds_since(start) > scene_.run.solver_timeout) {
+      throw std::runtime_error("a solver did not finish within run.solver_timeout after the end");
+    }
+    if (!hub_.receive(in, 0.2)) {
+      check_alive_();
+      continue;
+    }
+    if (in.kind == Incoming::Kind::Error) {
+      throw std::runtime_error("the " + in.phase + " solver failed while finishing: " +
+                               in.error_message);
+    }
+    if (in.kind != Incoming::Kind::Goodbye) continue;
+    PhaseRecord& phase_record = record_.phases[in.phase];
+    phase_record.timing = in.timing;
+    phase_record.finished = true;
+    said[in.phase] = true;
+  }
+}
+
+void CoupledStepLoop::run(ProgressLine& progress) {
+  const double end_time = scene_.run.end_time;
+  const double interval = scene_.run.output_interval;
+  const double end_tolerance = 1e-9 * end_time;
+  std::uint32_t output_index = 0;
+  double next_output_time = 0.0;
+  double last_output_time = -1.0;
+  bool outputs_pending = false;
+  for (;;) {
+    collect_states();
+    const auto work_start = Clock::now();
+    if (outputs_pending) {
+      write_outputs_();  // the solvers wrote their snapshot before sending this state
+      outputs_pending = false;
+    }
+    const bool stop = record_.time >= end_time - end_tolerance;
+    bool write = record_.time >= next_output_time - 1e-9 * interval;
+    if (stop && last_output_time != record_.time) write = true;  // always a final snapshot
+    double dt = 0.0;
+    if (!stop) {
+      double dt_min = std::numeric_limits<double>::infinity();
+      for (const auto& [phase, state] : states_) dt_min = std::min(dt_min, state.dt_limit);
+      dt = std::min(controller_.next(dt_min), end_time - record_.time);
+    }
+    if (write) {
+      for (const std::string& phase : phases_) {
+        record_.phases[phase].snapshots.push_back(
+            {output_index, record_.time, states_.at(phase).diagnostics.particle_count});
+      }
+      append_timeseries_row(dt);
+      last_output_time = record_.time;
+    }
+    send_commands(dt, write, output_index, stop);
+    if (write) {
+      ++output_index;
+      next_output_time = output_index * interval;
+      outputs_pending = true;
+    }
+    record_.coupler_seconds += seconds_since(work_start);
+    if (stop) break;
+    record_.time += dt;
+    record_.steps += 1;
+    record_.record_dt(dt);
+    progress.update(record_.time, record_.steps, dt);
+  }
+  wait_for_goodbyes();
+  progress.finish(record_.time, record_.steps);
+}
+
+}  // namespace porosph::coupler

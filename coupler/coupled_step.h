@@ -1,0 +1,52 @@
+// The lock-step loop of a coupled run (DESIGN.md section 1, one round trip per step):
+// collect every solver's state -> interaction (when both phases exist) -> the one shared dt
+// (TimeStepController) -> output / stop flags -> send every solver its command.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "coupler/progress_line.h"
+#include "coupler/run_record.h"
+#include "coupler/solver_hub.h"
+#include "coupler/time_step_controller.h"
+#include "io/timeseries_csv.h"
+#include "scene/scene.h"
+
+namespace porosph::coupler {
+
+class CoupledStepLoop {
+ public:
+  /// `check_alive` throws when a solver process died or the run was interrupted; `write_outputs`
+  /// refreshes run.json and run.xdmf (called after each output once the solvers have written it).
+  CoupledStepLoop(const scene::Scene& scene, SolverHub& hub, RunRecord& record,
+                  const std::string& out_dir, std::function<void()> check_alive,
+                  std::function<void()> write_outputs);
+
+  /// Runs to end_time and the solvers' Goodbye. Throws std::runtime_error on any failure.
+  void run(ProgressLine& progress);
+
+ private:
+  void collect_states();
+  void absorb_state(const std::string& phase, const coupling::StepState& state);
+  void append_timeseries_row(double dt);
+  void send_commands(double dt, bool write_output, std::uint32_t output_index, bool stop);
+  void wait_for_goodbyes();
+  std::vector<std::string> timeseries_columns() const;
+
+  const scene::Scene& scene_;
+  SolverHub& hub_;
+  RunRecord& record_;
+  std::function<void()> check_alive_;
+  std::function<void()> write_outputs_;
+  std::vector<std::string> phases_;
+  TimeStepController controller_;
+  std::unique_ptr<io::TimeSeriesCsv> timeseries_;
+  std::map<std::string, coupling::StepState> states_;
+  std::map<std::string, coupling::StepCommand> commands_;
+  std::vector<double> row_;
+};
+
+}  // namespace porosph::coupler

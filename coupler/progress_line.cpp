@@ -1,0 +1,49 @@
+#include "coupler/progress_line.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+
+namespace porosph::coupler {
+
+ProgressLine::ProgressLine(double end_time, bool enabled, std::FILE* stream)
+    : end_time_(end_time),
+      enabled_(enabled),
+      terminal_(isatty(fileno(stream)) != 0),
+      stream_(stream),
+      start_(Clock::now()),
+      last_print_(start_) {}
+
+void ProgressLine::update(double time, std::uint64_t step, double dt) {
+  if (!enabled_) return;
+  const auto now = Clock::now();
+  const double since_print = std::chrono::duration<double>(now - last_print_).count();
+  if (terminal_) {
+    if (since_print < 0.25) return;
+  } else {
+    const int decile = static_cast<int>(10.0 * time / end_time_);
+    if (decile <= last_decile_ && since_print < 60.0) return;
+    last_decile_ = decile;
+  }
+  last_print_ = now;
+  print(time, step, dt, false);
+}
+
+void ProgressLine::finish(double time, std::uint64_t step) {
+  if (!enabled_) return;
+  print(time, step, 0.0, true);
+}
+
+void ProgressLine::print(double time, std::uint64_t step, double dt, bool final) {
+  const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
+  const double fraction = std::clamp(time / end_time_, 0.0, 1.0);
+  const double steps_per_second = elapsed > 0 ? static_cast<double>(step) / elapsed : 0.0;
+  const double eta = fraction > 1e-9 ? elapsed * (1.0 - fraction) / fraction : 0.0;
+  std::fprintf(stream_, "%st = %.4g / %.4g s  %5.1f%%  step %llu  dt %.3g s  %.0f steps/s  ETA %.0f s%s",
+               terminal_ ? "\r" : "", time, end_time_, 100.0 * fraction,
+               static_cast<unsigned long long>(step), dt, steps_per_second, eta,
+               terminal_ ? (final ? "\n" : "   ") : "\n");
+  std::fflush(stream_);
+}
+
+}  // namespace porosph::coupler

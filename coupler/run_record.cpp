@@ -1,0 +1,143 @@
+#include "coupler/run_record.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+#include <toml++/toml.h>
+
+namespace porosph::coupler {
+
+namespace {
+
+using nlohmann::json;
+
+double norm(const std::vector<double>& v) {
+  double s = 0;
+  for (double x : v) s += x * x;
+  return std::sqrt(s);
+}
+
+/// JSON cannot hold NaN or infinity: those become null.
+json number(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
+
+json vector_json(const std::vector<double>& v) {
+  json out = json::array();
+  for (double x : v) out.push_back(number(x));
+  return out;
+}
+
+json resolved_scene_json(const std::string& toml_text) {
+  if (toml_text.empty()) return nullptr;
+  try {
+    std::ostringstream text;
+    text << toml::json_formatter{toml::parse(toml_text)};
+    return json::parse(text.str());
+  } catch (const std::exception&) {
+    return toml_text;  // keep the text rather than lose it
+  }
+}
+
+json diagnostics_json(const coupling::Diagnostics& d) {
+  json out;
+  out["particle_count"] = d.particle_count;
+  out["free_count"] = d.free_count;
+  out["removed_count"] = d.removed_count;
+  out["mass"] = number(d.mass);
+  out["momentum"] = vector_json(d.momentum);
+  out["kinetic_energy"] = number(d.kinetic_energy);
+  out["max_speed"] = number(d.max_speed);
+  return out;
+}
+
+json phase_json(const PhaseRecord& p) {
+  json out;
+  out["executable"] = p.executable;
+  out["solver_name"] = p.solver_name;
+  out["solver_version"] = p.solver_version;
+  out["pid"] = p.pid;
+  out["output_file"] = p.h5_file;
+  out["particles"] = {{"total", p.last.particle_count},
+                      {"free", p.last.free_count},
+                      {"removed", p.last.removed_count}};
+  out["mass"] = {{"initial", number(p.initial.mass)}, {"final", number(p.last.mass)}};
+  out["initial"] = diagnostics_json(p.initial);
+  out["final"] = diagnostics_json(p.last);
+  out["snapshots"] = p.snapshots.size();
+  out["wall_seconds"] = {{"total", number(p.timing.wall_seconds)},
+                         {"physics", number(p.finished ? p.timing.physics_seconds
+                                                       : p.physics_seconds)},
+                         {"communication", number(p.timing.communication_seconds)}};
+  out["finished"] = p.finished;
+  return out;
+}
+
+}  // namespace
+
+double ConservationLedger::relative_imbalance() const {
+  std::vector<double> total(impulse_to_water.size());
+  for (std::size_t k = 0; k < total.size(); ++k) total[k] = impulse_to_water[k] + impulse_to_soil[k];
+  return impulse_magnitude_sum > 0 ? norm(total) / impulse_magnitude_sum : 0.0;
+}
+
+void RunRecord::record_dt(double dt) {
+  dt_min = std::min(dt_min, dt);
+  dt_max = std::max(dt_max, dt);
+  dt_sum += dt;
+}
+
+void write_run_json(const std::string& path, const RunRecord& r) {
+  json out;
+  out["status"] = r.status;
+  out["message"] = r.message;
+  out["scene"] = {{"name", r.scene_name}, {"path", r.scene_path}};
+  out["parameters"] = resolved_scene_json(r.resolved_toml);
+  out["dimension"] = r.dimension;
+  out["steps"] = r.steps;
+  out["simulated_time"] = number(r.time);
+  out["end_time"] = number(r.end_time);
+  const double steps = static_cast<double>(std::max<std::uint64_t>(r.steps, 1));
+  out["dt"] = {{"min", number(r.steps ? r.dt_min : 0.0)},
+               {"mean", number(r.dt_sum / steps)},
+               {"max", number(r.dt_max)}};
+  json wall = {{"total", number(r.wall_seconds)}, {"coupler", number(r.coupler_seconds)}};
+  for (const auto& [name, phase] : r.phases) wall[name] = phase_json(phase)["wall_seconds"];
+  out["wall_seconds"] = wall;
+  json phases = json::object();
+  for (const auto& [name, phase] : r.phases) phases[name] = phase_json(phase);
+  out["phases"] = phases;
+  out["ledger"] = {{"impulse_to_water", vector_json(r.ledger.impulse_to_water)},
+                   {"impulse_to_soil", vector_json(r.ledger.impulse_to_soil)},
+                   {"relative_imbalance", number(r.ledger.relative_imbalance())}};
+  json observables = json::object();
+  for (const auto& [name, value] : r.observables) observables[name] = number(value);
+  out["observables"] = observables;
+
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream file(tmp);
+    if (!file) throw std::runtime_error("cannot write " + tmp);
+    file << out.dump(2) << "\n";
+    if (!file) throw std::runtime_error("cannot write " + tmp);
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    throw std::runtime_error("cannot rename " + tmp + " to " + path);
+  }
+}
+
+std::vector<io::XdmfField> snapshot_fields_of_phase(const std::string& phase, int dimension) {
+  const std::size_t d = static_cast<std::size_t>(dimension);
+  std::vector<io::XdmfField> fields = {{"velocity", d, "Float"}, {"density", 1, "Float"}};
+  if (phase == "water") fields.push_back({"pressure", 1, "Float"});
+  fields.push_back({"id", 1, "Int"});
+  fields.push_back({"fixed", 1, "UChar"});
+  return fields;
+}
+
+std::string h5_file_of_phase(const std::string& phase) {
+  return phase == "water" ? "fluid.h5" : phase + ".h5";
+}
+
+}  // namespace porosph::coupler

@@ -1,0 +1,73 @@
+// Everything the coupler learns during a run, and how it becomes run.json / run.xdmf.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "io/xdmf_writer.h"
+#include "proto/coupling_client.h"
+
+namespace porosph::coupler {
+
+/// Impulse given to each phase by the interaction (DESIGN.md section 1). The pair force is
+/// antisymmetric, so the two totals cancel to round-off; relative_imbalance() is what tests assert.
+struct ConservationLedger {
+  std::vector<double> impulse_to_water;  ///< sum over steps of dt * sum_a m_a a_a^interaction
+  std::vector<double> impulse_to_soil;
+  double impulse_magnitude_sum = 0;  ///< sum of |impulse| per step, the scale for the imbalance
+
+  explicit ConservationLedger(int dimension = 2)
+      : impulse_to_water(dimension, 0.0), impulse_to_soil(dimension, 0.0) {}
+  /// |sum of both impulses| / (sum over steps of the impulse magnitudes); 0 when nothing was exchanged.
+  double relative_imbalance() const;
+};
+
+struct PhaseRecord {
+  std::string phase;
+  std::string executable;  ///< empty in attach mode
+  std::string solver_name, solver_version;
+  std::int64_t pid = 0;
+  std::string h5_file;  ///< relative to the run directory
+  coupling::Diagnostics initial;
+  coupling::Diagnostics last;
+  std::vector<io::XdmfSnapshot> snapshots;
+  coupling::Timing timing;
+  bool finished = false;  ///< said Goodbye
+  double physics_seconds = 0;  ///< summed from the per-step reports
+};
+
+struct RunRecord {
+  std::string status = "running";  ///< "running" | "completed" | "failed"
+  std::string message;
+  std::string scene_name;
+  std::string scene_path;
+  std::string resolved_toml;
+  int dimension = 2;
+  std::uint64_t steps = 0;
+  double time = 0;
+  double end_time = 0;
+  double wall_seconds = 0;
+  double coupler_seconds = 0;  ///< coupler's own work: interaction, dt, bookkeeping, I/O
+  double dt_min = std::numeric_limits<double>::infinity();
+  double dt_max = 0;
+  double dt_sum = 0;
+  std::map<std::string, PhaseRecord> phases;
+  ConservationLedger ledger;
+  std::map<std::string, double> observables;  ///< latest value of every observable
+
+  void record_dt(double dt);
+};
+
+/// Writes run.json (atomically: temp file + rename).
+void write_run_json(const std::string& path, const RunRecord& record);
+
+/// The fields each built-in phase writes besides position (DESIGN.md section 6).
+std::vector<io::XdmfField> snapshot_fields_of_phase(const std::string& phase, int dimension);
+
+/// The HDF5 file name of a phase in the run directory ("fluid.h5", "soil.h5").
+std::string h5_file_of_phase(const std::string& phase);
+
+}  // namespace porosph::coupler

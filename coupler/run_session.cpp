@@ -1,0 +1,307 @@
+#include "coupler/run_session.h"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <sstream>
+
+#include "coupler/coupled_step.h"
+#include "coupler/progress_line.h"
+#include "coupler/run_record.h"
+#include "coupler/solver_hub.h"
+#include "coupler/solver_process.h"
+#include "scene/scene_loader.h"
+
+namespace porosph::coupler {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+/// Set by SIGINT/SIGTERM; the only process-wide state, as a signal handler can reach nothing else.
+std::atomic<int> interrupt_signal{0};
+extern "C" void on_interrupt(int signal) { interrupt_signal.store(signal); }
+
+/// A failure of the run (not of the input): status "failed", exit code 1.
+struct RunFailure : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// A failure caused by what the user gave us: exit code 2.
+struct BadInput : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::string fresh_ipc_endpoint() {
+  static std::atomic<int> counter{0};
+  std::ostringstream path;
+  path << "ipc://" << fs::temp_directory_path().string() << "/porosph-" << getpid() << "-"
+       << counter++ << ".ipc";
+  return path.str();
+}
+
+class RunSession {
+ public:
+  explicit RunSession(const RunOptions& options) : options_(options), started_(Clock::now()) {}
+
+  int run();
+
+ private:
+  void prepare_output_dir();
+  void start_solvers();
+  void handshake();
+  void check_interrupt() const;
+  void check_solvers_alive();
+  void shut_down_after_failure(const std::string& reason);
+  void write_outputs();
+
+  RunOptions options_;
+  Clock::time_point started_;
+  scene::Scene scene_;
+  RunRecord record_;
+  std::string out_dir_;
+  std::unique_ptr<SolverHub> hub_;
+  std::map<std::string, std::unique_ptr<SolverProcess>> processes_;
+};
+
+void RunSession::prepare_output_dir() {
+  out_dir_ = options_.out_dir.empty() ? "runs/" + scene_.name : options_.out_dir;
+  std::error_code error;
+  fs::create_directories(out_dir_, error);
+  if (error) throw BadInput("cannot create output directory '" + out_dir_ + "': " + error.message());
+  out_dir_ = fs::absolute(out_dir_).lexically_normal().string();
+  for (const char* stale : {"run.json", "timeseries.csv", "run.xdmf", "fluid.h5", "soil.h5"}) {
+    fs::remove(fs::path(out_dir_) / stale, error);
+  }
+}
+
+void RunSession::start_solvers() {
+  const std::string endpoint =
+      options_.endpoint.empty() ? fresh_ipc_endpoint() : options_.endpoint;
+  hub_ = std::make_unique<SolverHub>(endpoint);
+  const std::string connect = hub_->connect_endpoint();
+  if (options_.attach) {
+    std::fprintf(stderr, "coupler: waiting for solvers (%s) at %s\n",
+                 scene_.has_water() ? "water" : "", connect.c_str());
+    return;
+  }
+  for (const std::string& phase : scene_.phases()) {
+    std::string requested = phase == "water" ? options_.fluid_solver : options_.soil_solver;
+    if (requested.empty() && phase == "water") requested = scene_.water->solver;
+    const bool user_named = !requested.empty();
+    if (!user_named) requested = phase == "water" ? "fluid_solver" : "soil_solver";
+    // A solver command may carry its own arguments: "my_solver --model x" (split at spaces).
+    std::vector<std::string> args;
+    std::istringstream words(requested);
+    for (std::string word; words >> word;) args.push_back(word);
+    if (args.empty()) throw BadInput("the " + phase + " solver command is empty");
+    const std::string executable = find_solver_executable(args.front());
+    args.erase(args.begin());
+    args.insert(args.end(), {"--endpoint", connect});
+    if (executable.empty()) {
+      const std::string message =
+          "cannot find the " + phase + " solver executable '" + requested + "'";
+      if (user_named) throw BadInput(message);
+      throw RunFailure(message);
+    }
+    try {
+      processes_[phase] = std::make_unique<SolverProcess>(
+          executable, args,
+          std::vector<std::pair<std::string, std::string>>{{"POROSPH_ENDPOINT", connect}});
+    } catch (const std::exception& e) {
+      if (user_named) throw BadInput(e.what());
+      throw RunFailure(e.what());
+    }
+    PhaseRecord& phase_record = record_.phases[phase];
+    phase_record.phase = phase;
+    phase_record.executable = executable;
+    phase_record.pid = processes_[phase]->pid();
+    phase_record.h5_file = h5_file_of_phase(phase);
+  }
+}
+
+void RunSession::check_interrupt() const {
+  if (const int signal = interrupt_signal.load()) {
+    throw RunFailure(std::string("interrupted by signal ") + std::to_string(signal));
+  }
+}
+
+void RunSession::check_solvers_alive() {
+  for (auto& [phase, process] : processes_) {
+    if (!process->running()) {
+      throw RunFailure("the " + phase + " solver (pid " + std::to_string(process->pid()) + ") " +
+                       process->exit_description() + " at step " + std::to_string(record_.steps) +
+                       ", t = " + std::to_string(record_.time) + " s");
+    }
+  }
+}
+
+void RunSession::handshake() {
+  const auto expected = scene_.phases();
+  std::map<std::string, bool> greeted;
+  const double timeout = scene_.run.solver_timeout;
+  const auto start = Clock::now();
+  Incoming in;
+  while (greeted.size() < expected.size()) {
+    check_interrupt();
+    check_solvers_alive();
+    if (seconds_since(start) > timeout) {
+      throw RunFailure("no solver said hello within " + std::to_string(timeout) +
+                       " s (run.solver_timeout)");
+    }
+    if (!hub_->receive(in, 0.1)) continue;
+    if (in.kind == Incoming::Kind::Error) {
+      throw RunFailure("the " + in.phase + " solver failed during start-up: " + in.error_message);
+    }
+    if (in.kind != Incoming::Kind::Hello) continue;
+    if (in.protocol_version != coupling::kProtocolVersion) {
+      const std::string message = "protocol version mismatch: the " + in.phase + " solver '" +
+                                  in.solver_name + "' speaks version " +
+                                  std::to_string(in.protocol_version) + ", the coupler " +
+                                  std::to_string(coupling::kProtocolVersion);
+      hub_->send_error(in.phase, message);
+      throw RunFailure(message);
+    }
+    if (std::find(expected.begin(), expected.end(), in.phase) == expected.end()) {
+      hub_->send_error(in.phase, "this scene has no " + in.phase + " phase");
+      continue;
+    }
+    PhaseRecord& phase_record = record_.phases[in.phase];
+    phase_record.phase = in.phase;
+    phase_record.solver_name = in.solver_name;
+    phase_record.solver_version = in.solver_version;
+    phase_record.pid = in.pid;
+    phase_record.h5_file = h5_file_of_phase(in.phase);
+    greeted[in.phase] = true;
+  }
+  for (const std::string& phase : expected) {
+    coupling::SetupData setup;
+    setup.phase = phase;
+    setup.scene_toml = scene_.resolved_toml;
+    setup.scene_name = scene_.name;
+    setup.output_dir = out_dir_;
+    setup.dimension = scene_.run.dimension;
+    setup.dp = scene_.run.dp;
+    setup.h = scene_.h();
+    setup.dt0 = scene_.run.dt0;
+    setup.end_time = scene_.run.end_time;
+    setup.gravity = scene_.run.gravity;
+    setup.timeout_seconds = timeout;
+    hub_->send_setup(phase, setup);
+  }
+}
+
+void RunSession::shut_down_after_failure(const std::string& reason) {
+  if (hub_) {
+    for (const auto& [phase, unused] : record_.phases) {
+      try {
+        hub_->send_shutdown(phase, reason);
+      } catch (const std::exception&) {
+        // The peer is gone already; terminating below covers it.
+      }
+    }
+  }
+  for (auto& [phase, process] : processes_) {
+    if (!process->wait_for_exit(2.0)) process->terminate(2.0);
+  }
+}
+
+void RunSession::write_outputs() {
+  record_.wall_seconds = seconds_since(started_);
+  std::vector<io::XdmfPhaseSeries> series;
+  for (const auto& [phase, phase_record] : record_.phases) {
+    if (phase_record.snapshots.empty()) continue;
+    series.push_back({phase, phase_record.h5_file, record_.dimension,
+                      snapshot_fields_of_phase(phase, record_.dimension), phase_record.snapshots});
+  }
+  if (!series.empty()) io::write_xdmf(out_dir_ + "/run.xdmf", series);
+  write_run_json(out_dir_ + "/run.json", record_);
+}
+
+int RunSession::run() {
+  try {
+    scene_ = scene::load_scene_file(options_.scene_path, options_.overrides);
+  } catch (const scene::SceneError& e) {
+    std::fprintf(stderr, "coupler: bad scene: %s\n", e.what());
+    return kBadInput;
+  }
+  record_.scene_name = scene_.name;
+  record_.scene_path = options_.scene_path;
+  record_.resolved_toml = scene_.resolved_toml;
+  record_.dimension = scene_.run.dimension;
+  record_.end_time = scene_.run.end_time;
+  record_.ledger = ConservationLedger(scene_.run.dimension);
+  try {
+    prepare_output_dir();
+  } catch (const BadInput& e) {
+    std::fprintf(stderr, "coupler: %s\n", e.what());
+    return kBadInput;
+  }
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
+  int exit_code = kCompleted;
+  try {
+    start_solvers();
+    handshake();
+    CoupledStepLoop loop(scene_, *hub_, record_, out_dir_,
+                         [this] {
+                           check_interrupt();
+                           check_solvers_alive();
+                         },
+                         [this] { write_outputs(); });
+    ProgressLine progress(scene_.run.end_time, options_.progress);
+    loop.run(progress);
+    record_.status = "completed";
+    for (auto& [phase, process] : processes_) {
+      if (!process->wait_for_exit(10.0)) process->terminate(2.0);
+    }
+  } catch (const BadInput& e) {
+    record_.status = "failed";
+    record_.message = e.what();
+    shut_down_after_failure(e.what());
+    exit_code = kBadInput;
+  } catch (const std::exception& e) {
+    record_.status = "failed";
+    record_.message = e.what();
+    shut_down_after_failure(e.what());
+    exit_code = kRunFailed;
+  }
+  processes_.clear();  // terminates and reaps anything still running
+  try {
+    write_outputs();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "coupler: cannot write the run record: %s\n", e.what());
+    if (exit_code == kCompleted) exit_code = kRunFailed;
+  }
+  if (exit_code == kCompleted) {
+    std::fprintf(stderr,
+                 "coupler: completed %llu steps to t = %.6g s in %.1f s wall time\n"
+                 "coupler: results in %s (open run.xdmf in ParaView; run.json, timeseries.csv)\n",
+                 static_cast<unsigned long long>(record_.steps), record_.time,
+                 record_.wall_seconds, out_dir_.c_str());
+  } else {
+    std::fprintf(stderr, "coupler: run failed: %s\ncoupler: partial results in %s\n",
+                 record_.message.c_str(), out_dir_.c_str());
+  }
+  return exit_code;
+}
+
+}  // namespace
+
+int run_scene(const RunOptions& options) {
+  RunSession session(options);
+  return session.run();
+}
+
+}  // namespace porosph::coupler

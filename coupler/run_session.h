@@ -1,0 +1,26 @@
+// `coupler run`: one coupled run from scene to run directory (DESIGN.md sections 1, 4, 6).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace porosph::coupler {
+
+struct RunOptions {
+  std::string scene_path;
+  std::string out_dir;  ///< default: runs/<scene name>
+  std::vector<std::string> overrides;  ///< "--set a.b=value"
+  std::string fluid_solver;  ///< executable override for the water phase
+  std::string soil_solver;   ///< executable override for the soil phase
+  bool attach = false;       ///< solvers are started by hand and connect to `endpoint`
+  std::string endpoint;      ///< default: a fresh ipc:// path
+  bool progress = true;
+};
+
+/// Exit codes of the contract (DESIGN.md section 6).
+enum ExitCode { kCompleted = 0, kRunFailed = 1, kBadInput = 2 };
+
+/// Runs the scene; never throws. Writes OUT/run.json in every case where OUT could be created.
+int run_scene(const RunOptions& options);
+
+}  // namespace porosph::coupler

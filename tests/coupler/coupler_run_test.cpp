@@ -1,0 +1,197 @@
+// `coupler run` as a process with the test dummy as its water solver: the run-directory contract
+// and every fault path of issue 2 (solver error, NaN, crash, hang, killed solver, killed coupler,
+// protocol mismatch, bad input). Each fault must stop the run within seconds with exit code 1 and
+// run.json status "failed" naming the reason, and leave no process behind.
+#include <gtest/gtest.h>
+
+#include "tests/support/process_support.h"
+
+namespace porosph::testing {
+namespace {
+
+// A valid water-only scene; the dummy ignores its particles but the coupler validates it.
+const char* kScene = R"(
+[scene]
+name = "dummy_run"
+[run]
+end_time = 0.02
+output_interval = 0.005
+dp = 0.01
+dt0 = 0.001
+solver_timeout = 2.0
+[domain]
+min = [0.0, 0.0]
+max = [1.0, 1.0]
+[water]
+sound_speed = 10.0
+[[water.blocks]]
+shape = "box"
+min = [0.1, 0.1]
+max = [0.2, 0.2]
+)";
+
+struct CouplerRun {
+  CommandResult result;
+  nlohmann::json run_json;
+  std::string dir;
+};
+
+CouplerRun run_with_dummy(const std::string& name, const std::string& dummy_flags,
+                          std::vector<std::string> extra = {}) {
+  CouplerRun run;
+  run.dir = fresh_dir(name);
+  const std::string scene = write_text(run.dir + "/scene.toml", kScene);
+  std::vector<std::string> argv = {bin("coupler"),
+                                   "run",
+                                   scene,
+                                   "--out",
+                                   run.dir + "/out",
+                                   "--fluid-solver",
+                                   bin("dummy_solver") + " --phase water " + dummy_flags,
+                                   "--no-progress"};
+  argv.insert(argv.end(), extra.begin(), extra.end());
+  run.result = run_process(argv, run.dir + "/log.txt", 60);
+  if (std::filesystem::exists(run.dir + "/out/run.json")) {
+    run.run_json = read_json(run.dir + "/out/run.json");
+  }
+  return run;
+}
+
+pid_t solver_pid(const nlohmann::json& run_json) {
+  return run_json.at("phases").at("water").at("pid").get<pid_t>();
+}
+
+TEST(CouplerRun, CompletesWithTheDummyAndWritesTheRunRecord) {
+  const auto run = run_with_dummy("complete", "--phase water");
+  ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
+  EXPECT_EQ(run.run_json.at("status"), "completed");
+  EXPECT_EQ(run.run_json.at("steps").get<int>(), 20);  // end_time / dt0, no active limit
+  EXPECT_NEAR(run.run_json.at("simulated_time").get<double>(), 0.02, 1e-12);
+  EXPECT_EQ(run.run_json.at("phases").at("water").at("finished"), true);
+  EXPECT_EQ(run.run_json.at("parameters").at("run").at("dp").get<double>(), 0.01);
+  // Outputs at 0, 0.005, ..., 0.02: five rows after the header.
+  const std::string csv = read_text(run.dir + "/out/timeseries.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 6) << csv;
+  EXPECT_TRUE(wait_gone(solver_pid(run.run_json), 5.0));
+}
+
+TEST(CouplerRun, SetOverridesReachTheRun) {
+  const auto run = run_with_dummy("override", "", {"--set", "run.end_time=0.004"});
+  ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
+  EXPECT_EQ(run.run_json.at("steps").get<int>(), 4);
+}
+
+void expect_failed(const CouplerRun& run, const std::string& reason_part) {
+  EXPECT_EQ(run.result.exit_code, 1) << run.result.output;
+  ASSERT_FALSE(run.run_json.is_null()) << "run.json missing; output:\n" << run.result.output;
+  EXPECT_EQ(run.run_json.at("status"), "failed");
+  const std::string message = run.run_json.at("message");
+  EXPECT_NE(message.find(reason_part), std::string::npos) << message;
+  EXPECT_NE(run.result.output.find(reason_part), std::string::npos) << run.result.output;
+  EXPECT_TRUE(wait_gone(solver_pid(run.run_json), 5.0)) << "solver process left behind";
+  // "within seconds": the slowest fault (a hang) waits the 2 s solver_timeout of the scene.
+  EXPECT_LT(run.result.seconds, 15.0);
+}
+
+TEST(CouplerRunFaults, SolverErrorStopsTheRun) {
+  expect_failed(run_with_dummy("error", "--fail-at-step 5"), "failed at step 5");
+}
+
+TEST(CouplerRunFaults, NanInASolverNamesProcessStepAndParticle) {
+  const auto run = run_with_dummy("nan", "--nan-at-step 3");
+  expect_failed(run, "particle 7");
+  const std::string message = run.run_json.at("message");
+  EXPECT_NE(message.find("water solver"), std::string::npos) << message;
+  EXPECT_NE(message.find("step 3"), std::string::npos) << message;
+}
+
+TEST(CouplerRunFaults, CrashingSolverIsDetected) {
+  expect_failed(run_with_dummy("crash", "--crash-at-step 4"), "signal 6");
+}
+
+TEST(CouplerRunFaults, SilentSolverTimesOut) {
+  expect_failed(run_with_dummy("hang", "--hang-at-step 4"), "did not answer within 2");
+}
+
+TEST(CouplerRunFaults, ProtocolVersionMismatchIsRefused) {
+  expect_failed(run_with_dummy("version", "--protocol-version 99"), "protocol version mismatch");
+}
+
+TEST(CouplerRunFaults, KilledSolverStopsTheRun) {
+  const std::string dir = fresh_dir("killed-solver");
+  const std::string scene = write_text(dir + "/scene.toml", kScene);
+  const pid_t coupler =
+      start_process({bin("coupler"), "run", scene, "--out", dir + "/out", "--fluid-solver",
+                     bin("dummy_solver") + " --phase water --hang-at-step 2", "--no-progress",
+                     "--set", "run.solver_timeout=30"},
+                    dir + "/log.txt");
+  // run.json is written at the first output (t = 0), with the solver's pid in it.
+  pid_t solver = 0;
+  for (int i = 0; i < 250 && solver == 0; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    if (std::filesystem::exists(dir + "/out/run.json"))
+      solver = solver_pid(read_json(dir + "/out/run.json"));
+  }
+  ASSERT_GT(solver, 0);
+  kill(solver, SIGKILL);
+  EXPECT_EQ(wait_process(coupler, 10.0), 1) << read_text(dir + "/log.txt");
+  const auto record = read_json(dir + "/out/run.json");
+  EXPECT_EQ(record.at("status"), "failed");
+  EXPECT_NE(record.at("message").get<std::string>().find("signal 9"), std::string::npos);
+}
+
+TEST(CouplerRunFaults, KilledCouplerTakesItsSolversWithIt) {
+  const std::string dir = fresh_dir("killed-coupler");
+  const std::string scene = write_text(dir + "/scene.toml", kScene);
+  const pid_t coupler =
+      start_process({bin("coupler"), "run", scene, "--out", dir + "/out", "--fluid-solver",
+                     bin("dummy_solver") + " --phase water --hang-at-step 2", "--no-progress",
+                     "--set", "run.solver_timeout=30"},
+                    dir + "/log.txt");
+  pid_t solver = 0;
+  for (int i = 0; i < 250 && solver == 0; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    if (std::filesystem::exists(dir + "/out/run.json"))
+      solver = solver_pid(read_json(dir + "/out/run.json"));
+  }
+  ASSERT_GT(solver, 0);
+  kill(coupler, SIGKILL);
+  wait_process(coupler, 5.0);
+  EXPECT_TRUE(wait_gone(solver, 5.0)) << "the solver outlived a killed coupler";
+}
+
+TEST(CouplerRunInput, BadSceneExitsTwoNamingFileLineAndKey) {
+  const std::string dir = fresh_dir("bad-scene");
+  std::string text = kScene;
+  text.replace(text.find("dp = 0.01"), 9, "dp = -0.01");
+  const std::string scene = write_text(dir + "/scene.toml", text);
+  const auto result =
+      run_process({bin("coupler"), "run", scene, "--out", dir + "/out"}, dir + "/log.txt");
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("scene.toml:7"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("run.dp"), std::string::npos) << result.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/out/run.json"));
+}
+
+TEST(CouplerRunInput, UnknownSolverExecutableExitsTwo) {
+  const std::string dir = fresh_dir("no-solver");
+  const std::string scene = write_text(dir + "/scene.toml", kScene);
+  const auto result = run_process({bin("coupler"), "run", scene, "--out", dir + "/out",
+                                   "--fluid-solver", "/nonexistent/solver"},
+                                  dir + "/log.txt");
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("/nonexistent/solver"), std::string::npos) << result.output;
+}
+
+TEST(CouplerRunInput, CheckPrintsTheResolvedScene) {
+  const std::string dir = fresh_dir("check");
+  const std::string scene = write_text(dir + "/scene.toml", kScene);
+  const auto result =
+      run_process({bin("coupler"), "check", scene, "--set", "run.cfl=0.1"}, dir + "/log.txt");
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("cfl = 0.1"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("h_factor = 1.2"), std::string::npos) << "defaults filled in";
+}
+
+}  // namespace
+}  // namespace porosph::testing
