@@ -1,0 +1,54 @@
+// The validation tool on hand-made run directories with known answers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "tests/support/process_support.h"
+#include "tools/validation/case_checks.h"
+#include "tools/validation/run_directory.h"
+
+namespace porosph::testing {
+namespace {
+
+TEST(Validation, InterpolatesLinearlyAndRefusesToExtrapolate) {
+  const std::vector<double> x = {0.0, 1.0, 3.0}, y = {0.0, 2.0, 6.0};
+  EXPECT_DOUBLE_EQ(validation::interpolate(x, y, 0.5), 1.0);
+  EXPECT_DOUBLE_EQ(validation::interpolate(x, y, 2.0), 4.0);
+  EXPECT_TRUE(std::isnan(validation::interpolate(x, y, 3.5)));
+}
+
+// A synthetic dam-break run whose front follows Z = 1 + 0.5 T exactly, against a two-point table:
+// the errors are known in closed form.
+TEST(Validation, DamBreakErrorOfAKnownFront) {
+  const std::string dir = fresh_dir("validation-dam");
+  const double a = 0.05715, dp = 0.001, g = 9.81;
+  write_text(dir + "/run.json", R"({"parameters": {"run": {"dp": 0.001, "gravity": [0, -9.81]},
+      "water": {"blocks": [{"min": [0, 0], "max": [0.05715, 0.1143]}]}}})");
+  const double scale = std::sqrt(2 * g / a);
+  std::string csv = "t,front\n";
+  for (int i = 0; i <= 40; ++i) {
+    const double t = 0.005 * i, T = t * scale;
+    // front stored as the leading particle centre: Z a - dp/2
+    csv += std::to_string(t) + "," + std::to_string((1 + 0.5 * T) * a - 0.5 * dp) + "\n";
+  }
+  write_text(dir + "/timeseries.csv", csv);
+  const std::string reference = write_text(dir + "/reference.csv", "T,Z\n1.0,1.6\n2.0,1.8\n");
+  const auto c = validation::compare_dam_break(dir, reference);
+  ASSERT_EQ(c.T.size(), 2u);
+  // Z_sim(1) = 1.5 -> |dZ| = 0.1; Z_sim(2) = 2.0 -> |dZ| = 0.2 (to the csv's 6 printed digits).
+  EXPECT_NEAR(c.Z_simulated[0], 1.5, 1e-4);
+  EXPECT_NEAR(c.mean_abs_error, 0.15, 1e-4);
+  EXPECT_NEAR(c.max_abs_error, 0.2, 1e-4);
+}
+
+TEST(Validation, MissingRunDirectoryIsAClearError) {
+  try {
+    validation::read_run_json("/nonexistent/run");
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/run/run.json"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace porosph::testing
