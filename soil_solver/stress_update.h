@@ -1,0 +1,51 @@
+// One explicit stress update of a soil particle, seed paper eq. 12a/12b with the corrections of
+// Bui et al. 2008 (see drucker_prager.h for the formulas and the sign convention, tension
+// positive):
+//   1. dsigma/dt = co-rotation + Hooke (eq. 6, jaumann_rate.h) - lambda_dot [...] (eq. 12a),
+//      lambda_dot from eq. 12b evaluated at the OLD stress, non-zero only on the yield surface
+//      while loading;
+//   2. sigma_new = sigma + dt dsigma/dt (forward Euler; a solver with a different integrator uses
+//      stress_rate() and apply_return_corrections() itself);
+//   3. tension cracking, then stress scaling back, on sigma_new.
+// PlasticState accumulates lambda = sum lambda_dot dt. The return corrections of step 3 are not
+// counted in lambda (they are a projection, not a flow-rule increment).
+#pragma once
+
+#include <Eigen/Core>
+
+#include "soil_solver/drucker_prager.h"
+#include "soil_solver/jaumann_rate.h"
+#include "soil_solver/soil_material.h"
+
+namespace porosph::soil {
+
+/// Per-particle plastic history.
+struct PlasticState {
+  double plastic_multiplier = 0.0;   ///< accumulated lambda = sum lambda_dot dt [-]
+  bool plastic_last_update = false;  ///< last update had lambda_dot > 0 or a return correction
+};
+
+/// Stress rate of eq. 12a at stress sigma; writes the lambda_dot it used (eq. 12b, >= 0).
+inline Eigen::Matrix3d stress_rate(const Material& m, const Eigen::Matrix3d& sigma,
+                                   const Eigen::Matrix3d& strain_rate, const Eigen::Matrix3d& spin,
+                                   double& lambda_dot) {
+  lambda_dot = plastic_multiplier_rate(m, sigma, strain_rate);
+  Eigen::Matrix3d rate =
+      elastic_stress_rate(m.bulk_modulus, m.shear_modulus, sigma, strain_rate, spin);
+  if (lambda_dot > 0.0) rate += plastic_stress_rate(m, sigma, lambda_dot);
+  return rate;
+}
+
+/// New stress after dt (steps 1-3 above); accumulates lambda_dot dt in `state`.
+inline Eigen::Matrix3d update_stress(const Material& m, const Eigen::Matrix3d& sigma,
+                                     const Eigen::Matrix3d& strain_rate,
+                                     const Eigen::Matrix3d& spin, double dt, PlasticState& state) {
+  double lambda_dot = 0.0;
+  Eigen::Matrix3d next = sigma + dt * stress_rate(m, sigma, strain_rate, spin, lambda_dot);
+  const bool corrected = apply_return_corrections(m, next);
+  state.plastic_multiplier += lambda_dot * dt;
+  state.plastic_last_update = corrected || lambda_dot > 0.0;
+  return next;
+}
+
+}  // namespace porosph::soil

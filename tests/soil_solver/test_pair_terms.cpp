@@ -1,0 +1,126 @@
+// Per-pair soil terms: Gray-Monaghan artificial stress, Monaghan artificial viscosity (dissipative
+// sign), stress divergence of eq. 5 / 16.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "soil_solver/artificial_stress.h"
+#include "soil_solver/soil_artificial_viscosity.h"
+#include "soil_solver/stress_divergence.h"
+#include "sph/kernels.h"
+
+namespace porosph::soil {
+namespace {
+
+using Eigen::Matrix3d;
+using V2 = sph::Vec<2>;
+using V3 = sph::Vec<3>;
+
+constexpr double kRoundOff = 1e-12;  // relative, eigen-decomposition of a 2x2 / 3x3 tensor
+
+// R diag(a, b, c) R^T with R an in-plane rotation by theta.
+Matrix3d rotated_principal(double a, double b, double c, double theta) {
+  Matrix3d r = Matrix3d::Identity();
+  r(0, 0) = r(1, 1) = std::cos(theta);
+  r(1, 0) = std::sin(theta);
+  r(0, 1) = -std::sin(theta);
+  return r * Eigen::Vector3d(a, b, c).asDiagonal() * r.transpose();
+}
+
+TEST(ArtificialStress, ZeroInCompression) {
+  const Matrix3d sigma = rotated_principal(-100e3, -30e3, -60e3, 0.4);
+  EXPECT_EQ(artificial_stress<2>(sigma, 1800.0, 0.5), Matrix3d::Zero());
+  EXPECT_EQ(artificial_stress<3>(sigma, 1800.0, 0.5), Matrix3d::Zero());
+}
+
+TEST(ArtificialStress, TensilePrincipalStressOnly) {
+  // Principal stresses 20 kPa (tension, along e = (cos t, sin t)) and -50 kPa; rho 2000, eps 0.5:
+  //   R = -0.5 * 2e4 / 2000^2 e (x) e = -2.5e-3 e (x) e   [Pa m^6/kg^2]
+  const double t = 0.7, rho = 2000.0;
+  const Matrix3d sigma = rotated_principal(20e3, -50e3, -10e3, t);
+  Matrix3d expected = Matrix3d::Zero();
+  const Eigen::Vector3d e(std::cos(t), std::sin(t), 0.0);
+  expected = -2.5e-3 * e * e.transpose();
+  EXPECT_LE((artificial_stress<2>(sigma, rho, 0.5) - expected).norm(), kRoundOff * 2.5e-3);
+  EXPECT_LE((artificial_stress<3>(sigma, rho, 0.5) - expected).norm(), kRoundOff * 2.5e-3);
+  // Out-of-plane tension: only 3D sees it (2D uses the in-plane block, zz is not in the
+  // 2D momentum balance).
+  const Matrix3d zz_tension = rotated_principal(-1e3, -2e3, 40e3, 0.3);
+  EXPECT_EQ(artificial_stress<2>(zz_tension, rho, 0.5), Matrix3d::Zero());
+  EXPECT_NEAR(artificial_stress<3>(zz_tension, rho, 0.5)(2, 2), -0.5 * 40e3 / (rho * rho),
+              kRoundOff * 5e-3);
+}
+
+TEST(ArtificialStress, PairFactor) {
+  EXPECT_DOUBLE_EQ(artificial_stress_factor(3.0, 3.0, 2.55), 1.0);  // r = dp
+  // 0.5^2.55 = exp(-2.55 ln 2) = exp(-1.767543) = 0.1707550
+  EXPECT_NEAR(artificial_stress_factor(1.0, 2.0, 2.55), std::exp(-2.55 * std::log(2.0)), 1e-15);
+  EXPECT_NEAR(artificial_stress_factor(1.0, 2.0, 2.55), 0.1707550, 1e-7);
+}
+
+TEST(ArtificialStress, RepulsiveInTension) {
+  // Two particles in uniaxial tension along x, a spacing dp apart along x.
+  const double dp = 1e-3, h = 1.2e-3, rho = 2000.0, m = rho * dp * dp;
+  const sph::CubicSpline<2> kernel(h);
+  const V2 x_ij(dp, 0.0);  // x_i - x_j: i to the right of j
+  const V2 grad = kernel.gradient(x_ij, dp);
+  const Matrix3d sigma = rotated_principal(10e3, -5e3, -1e3, 0.0);
+  const Matrix3d r = artificial_stress<2>(sigma, rho, 0.5);
+  const double f = artificial_stress_factor(kernel.w(dp), kernel.w(dp), 2.55);
+  const V2 a_i = artificial_stress_acceleration<2>(m, r, r, f, grad);
+  EXPECT_GT(a_i.dot(x_ij), 0.0);  // pushes i away from j
+  // Hand value: a_x = m * 2 * (-0.5 * 1e4 / rho^2) * 1 * dW/dr(dp) (dW/dr < 0), a_y = 0.
+  EXPECT_NEAR(a_i.x(), m * 2.0 * (-0.5 * 1e4 / (rho * rho)) * kernel.dw_dr(dp),
+              kRoundOff * std::abs(a_i.x()));
+  EXPECT_NEAR(a_i.y(), 0.0, kRoundOff * std::abs(a_i.x()));
+  // Same pair under compression: no artificial stress at all.
+  const Matrix3d rc = artificial_stress<2>(Matrix3d(-sigma), rho, 0.5);
+  EXPECT_EQ(artificial_stress_acceleration<2>(m, rc, rc, f, grad), V2::Zero());
+}
+
+TEST(SoilArtificialViscosity, DissipatesApproachingPairsOnly) {
+  const double h = 1.2e-3, dp = 1e-3, rho = 1800.0, c = 60.0, m = rho * dp * dp;
+  const sph::CubicSpline<2> kernel(h);
+  const SoilArtificialViscosity av{0.1, 0.1, h};
+  const V2 x_ij(dp, 0.0);
+  const V2 grad = kernel.gradient(x_ij, dp);
+  const V2 approaching(-0.2, 0.05);  // v_i - v_j with v_ij . x_ij < 0
+  const V2 a_i = av.acceleration<2>(m, approaching, x_ij, c, c, rho, rho, grad);
+  // mu = h v.x / (r^2 + 0.01 h^2) = 1.2e-3 * (-2e-4) / (1e-6 + 1.44e-8) = -2.3659e-4... m/s ->
+  // Pi = (0.1 * 60 * 2.3659e-1 + 0.1 * mu^2) / 1800, with mu = -0.236593 m/s.
+  const double mu = h * (-0.2 * dp) / (dp * dp + 0.01 * h * h);
+  const double pi = (-0.1 * c * mu + 0.1 * mu * mu) / rho;
+  EXPECT_NEAR(av.pi(approaching.dot(x_ij), dp, c, rho), pi, kRoundOff * pi);
+  EXPECT_NEAR(mu, -0.2365930599, 1e-10);
+  EXPECT_LT(a_i.dot(approaching), 0.0);  // decelerates the relative motion
+  EXPECT_GT(a_i.dot(x_ij), 0.0);         // a repulsion
+  // Receding: exactly zero.
+  EXPECT_EQ(av.acceleration<2>(m, V2(-approaching), x_ij, c, c, rho, rho, grad), V2::Zero());
+  // Sound speed: sqrt(K / (rho_sat - rho_w)) of CASES.md, K = 4.1667 MPa, 1810 - 1000 = 810.
+  EXPECT_NEAR(soil_sound_speed(5e6 / 1.2, 810.0), std::sqrt(5e6 / 1.2 / 810.0), 1e-12);
+  EXPECT_NEAR(soil_sound_speed(5e6 / 1.2, 810.0), 71.7219, 1e-4);
+}
+
+TEST(StressDivergence, PressureLikeRepulsionAndAntisymmetry) {
+  const double h = 1.2e-3, dp = 1e-3;
+  const sph::CubicSpline<3> kernel(h);
+  const V3 x_ij(dp, 0.3 * dp, -0.2 * dp);
+  const double r = x_ij.norm();
+  const V3 grad_i = kernel.gradient(x_ij, r), grad_j = kernel.gradient(V3(-x_ij), r);
+  const double m_i = 2e-6, m_j = 3e-6, rho_i = 1900.0, rho_j = 2000.0;
+  const Matrix3d s_i = -50e3 * Matrix3d::Identity(), s_j = -70e3 * Matrix3d::Identity();
+  const V3 a_i = stress_divergence_acceleration<3>(m_j, s_i, s_j, rho_i, rho_j, grad_i);
+  const V3 a_j = stress_divergence_acceleration<3>(m_i, s_j, s_i, rho_j, rho_i, grad_j);
+  // Isotropic compression acts like a pressure: -m_j (p_i + p_j) / (rho_i rho_j) grad_i W.
+  EXPECT_TRUE(a_i.isApprox(-m_j * 120e3 / (rho_i * rho_j) * grad_i, kRoundOff));
+  EXPECT_GT(a_i.dot(x_ij), 0.0);
+  // Momentum conservation pair by pair.
+  EXPECT_LE((m_i * a_i + m_j * a_j).norm(), kRoundOff * m_i * a_i.norm());
+  // 2D uses only the in-plane block: an out-of-plane stress has no 2D effect.
+  Matrix3d zz = Matrix3d::Zero();
+  zz(2, 2) = -1e5;
+  EXPECT_EQ(stress_divergence_acceleration<2>(1.0, zz, zz, 1.0, 1.0, V2(1.0, 2.0)), V2::Zero());
+}
+
+}  // namespace
+}  // namespace porosph::soil
