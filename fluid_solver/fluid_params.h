@@ -1,0 +1,67 @@
+// Parameters of the water phase, resolved once from the scene and passed to every term (the
+// solver's context: no globals).
+#pragma once
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "fluid_solver/artificial_viscosity.h"
+#include "fluid_solver/equation_of_state.h"
+#include "scene/scene.h"
+#include "sph/vector.h"
+
+namespace porosph::fluid {
+
+template <int D>
+struct FluidParams {
+  double dp = 0.01;                ///< particle spacing [m]
+  double h = 0.012;                ///< smoothing length [m]
+  double volume = 1e-4;            ///< particle volume dp^D [m^D]
+  TaitEos eos;                     ///< eq. 4
+  double mu = 0.0;                 ///< dynamic viscosity [Pa s] (Morris term; 0: off)
+  ArtificialViscosity artificial;  ///< Monaghan 1992 (alpha = beta = 0: off)
+  double eta2 = 0.0;               ///< 0.01 h^2, regularisation of 1/r terms
+  sph::Vec<D> gravity = sph::Vec<D>::Zero();
+  bool no_slip = true;           ///< walls: mirrored velocity in viscous terms; false: excluded
+  int density_filter_every = 0;  ///< Shepard filter period in steps (0: off)
+  int euler_every = 40;          ///< modified Verlet: Euler step period
+  double cfl = 0.2, c_a = 0.25, viscous_coefficient = 0.125;
+  bool hydrostatic_initial = true;
+
+  bool morris_on() const { return mu > 0.0; }
+  bool artificial_on() const { return artificial.alpha > 0.0 || artificial.beta > 0.0; }
+
+  /// Throws std::invalid_argument if the scene has no water or an unknown wall condition.
+  static FluidParams from_scene(const scene::Scene& s) {
+    if (!s.water) throw std::invalid_argument("fluid solver: the scene has no [water] phase");
+    if (s.run.dimension != D) {
+      throw std::invalid_argument("fluid solver built for D = " + std::to_string(D) +
+                                  " but run.dimension = " + std::to_string(s.run.dimension));
+    }
+    const scene::WaterPhase& w = *s.water;
+    FluidParams p;
+    p.dp = s.run.dp;
+    p.h = s.h();
+    p.volume = std::pow(p.dp, D);
+    p.eos = TaitEos(w.rho0, w.sound_speed, w.gamma);
+    p.mu = w.viscosity;
+    p.eta2 = 0.01 * p.h * p.h;
+    p.artificial = ArtificialViscosity{w.alpha, w.beta, p.h, p.eta2};
+    p.gravity = sph::to_vec<D>(s.run.gravity, "run.gravity");
+    if (w.wall_condition != "no_slip" && w.wall_condition != "free_slip") {
+      throw std::invalid_argument("water.wall_condition: expected no_slip or free_slip, got '" +
+                                  w.wall_condition + "'");
+    }
+    p.no_slip = w.wall_condition == "no_slip";
+    p.density_filter_every = w.density_filter_every;
+    p.euler_every = s.run.euler_every;
+    p.cfl = s.run.cfl;
+    p.c_a = s.run.c_a;
+    p.viscous_coefficient = s.run.viscous_coefficient;
+    p.hydrostatic_initial = w.hydrostatic_initial;
+    return p;
+  }
+};
+
+}  // namespace porosph::fluid

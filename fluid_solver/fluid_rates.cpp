@@ -1,0 +1,124 @@
+#include "fluid_solver/fluid_rates.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "fluid_solver/artificial_viscosity.h"
+#include "fluid_solver/continuity.h"
+#include "fluid_solver/pressure_force.h"
+#include "fluid_solver/viscosity_morris.h"
+#include "sph/kernels.h"
+
+namespace porosph::fluid {
+namespace {
+
+template <int D, class Kernel, bool kMorris, bool kArtificial, bool kNoSlip>
+RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
+                       const FluidParams<D>& prm, FluidParticles<D>& P) {
+  using Vec = sph::Vec<D>;
+  const std::int64_t n = static_cast<std::int64_t>(P.n_free);
+  const Vec* vel = P.velocity.data();
+  const Vec* wall_v = P.wall_velocity.data();
+  const double* rho = P.density.data();
+  const double* p = P.pressure.data();
+  const double* c = P.sound_speed.data();
+  const double* m = P.mass.data();
+  const double mu = prm.mu, eta2 = prm.eta2;
+  const ArtificialViscosity av = prm.artificial;
+  const Vec g = prm.gravity;
+  double max_v2 = 0.0, max_a2 = 0.0;
+#pragma omp parallel for schedule(dynamic, 256) reduction(max : max_v2, max_a2)
+  for (std::int64_t a = 0; a < n; ++a) {
+    const Vec v_a = vel[a];
+    const double rho_a = rho[a], p_a = p[a], c_a = c[a];
+    Vec acc = Vec::Zero();
+    double divergence = 0.0;
+    // Water neighbours.
+    for (auto it = nl.begin(a); it != nl.mid(a); ++it) {
+      const std::int32_t b = it->b;
+      const Vec grad_w = kernel.grad_factor(it->r) * it->x_ab;
+      const Vec v_ab = v_a - vel[b];
+      divergence += continuity_term<D>(m[b], rho[b], v_ab, grad_w);
+      acc += pressure_acceleration<D>(m[b], p_a, p[b], rho_a, rho[b], grad_w);
+      if constexpr (kMorris) {
+        acc += morris_viscous_acceleration<D>(m[b], mu, mu, rho_a, rho[b], it->x_ab, it->r, grad_w,
+                                              v_ab, eta2);
+      }
+      if constexpr (kArtificial) {
+        acc += av.acceleration<D>(m[b], v_ab, it->x_ab, it->r, c_a, c[b], rho_a, rho[b], grad_w);
+      }
+    }
+    // Wall neighbours (Adami 2012): own velocity in eq. 2, mirrored velocity in viscous terms.
+    for (auto it = nl.mid(a); it != nl.end(a); ++it) {
+      const std::int32_t b = it->b;
+      const Vec grad_w = kernel.grad_factor(it->r) * it->x_ab;
+      divergence += continuity_term<D>(m[b], rho[b], Vec(v_a - vel[b]), grad_w);
+      acc += pressure_acceleration<D>(m[b], p_a, p[b], rho_a, rho[b], grad_w);
+      if constexpr (kNoSlip && (kMorris || kArtificial)) {
+        const Vec v_ab = v_a - wall_v[b];
+        if constexpr (kMorris) {
+          acc += morris_viscous_acceleration<D>(m[b], mu, mu, rho_a, rho[b], it->x_ab, it->r,
+                                                grad_w, v_ab, eta2);
+        }
+        if constexpr (kArtificial) {
+          acc += av.acceleration<D>(m[b], v_ab, it->x_ab, it->r, c_a, c[b], rho_a, rho[b], grad_w);
+        }
+      }
+    }
+    acc += g;
+    P.acceleration[a] = acc;
+    P.density_rate[a] = rho_a * divergence;
+    max_v2 = std::max(max_v2, v_a.squaredNorm());
+    max_a2 = std::max(max_a2, (acc + P.interaction[a]).squaredNorm());
+  }
+  return RateSummary{std::sqrt(max_v2), std::sqrt(max_a2)};
+}
+
+template <int D, class Kernel, bool kMorris, bool kArtificial>
+RateSummary dispatch_wall(const sph::NeighbourList<D>& nl, const Kernel& k,
+                          const FluidParams<D>& prm, FluidParticles<D>& P) {
+  if (prm.no_slip) return rates_loop<D, Kernel, kMorris, kArtificial, true>(nl, k, prm, P);
+  return rates_loop<D, Kernel, kMorris, kArtificial, false>(nl, k, prm, P);
+}
+
+template <int D, class Kernel, bool kMorris>
+RateSummary dispatch_artificial(const sph::NeighbourList<D>& nl, const Kernel& k,
+                                const FluidParams<D>& prm, FluidParticles<D>& P) {
+  if (prm.artificial_on()) return dispatch_wall<D, Kernel, kMorris, true>(nl, k, prm, P);
+  return dispatch_wall<D, Kernel, kMorris, false>(nl, k, prm, P);
+}
+
+}  // namespace
+
+template <int D>
+void update_water_pressure(const FluidParams<D>& params, FluidParticles<D>& P) {
+  const std::int64_t n = static_cast<std::int64_t>(P.n_free);
+  const TaitEos eos = params.eos;
+#pragma omp parallel for schedule(static)
+  for (std::int64_t a = 0; a < n; ++a) {
+    P.pressure[a] = eos.pressure(P.density[a]);
+    P.sound_speed[a] = eos.sound_speed(P.density[a]);
+  }
+}
+
+template <int D, class Kernel>
+RateSummary compute_fluid_rates(const sph::NeighbourList<D>& neighbours, const Kernel& kernel,
+                                const FluidParams<D>& params, FluidParticles<D>& P) {
+  if (params.morris_on())
+    return dispatch_artificial<D, Kernel, true>(neighbours, kernel, params, P);
+  return dispatch_artificial<D, Kernel, false>(neighbours, kernel, params, P);
+}
+
+#define POROSPH_INSTANTIATE(D, KERNEL)                    \
+  template RateSummary compute_fluid_rates<D, KERNEL<D>>( \
+      const sph::NeighbourList<D>&, const KERNEL<D>&, const FluidParams<D>&, FluidParticles<D>&);
+POROSPH_INSTANTIATE(2, sph::CubicSpline)
+POROSPH_INSTANTIATE(2, sph::WendlandC2)
+POROSPH_INSTANTIATE(3, sph::CubicSpline)
+POROSPH_INSTANTIATE(3, sph::WendlandC2)
+#undef POROSPH_INSTANTIATE
+template void update_water_pressure<2>(const FluidParams<2>&, FluidParticles<2>&);
+template void update_water_pressure<3>(const FluidParams<3>&, FluidParticles<3>&);
+
+}  // namespace porosph::fluid

@@ -1,0 +1,33 @@
+// The water phase's right-hand side: for every water particle a (gather form, one OpenMP task per
+// particle, no atomics), the sum over its neighbours b of
+//   eq. 2   continuity                        continuity.h
+//   eq. 3   symmetric pressure gradient       pressure_force.h
+//   eq. 3   Morris 1997 laminar viscosity     viscosity_morris.h      (mu > 0)
+//           Monaghan 1992 artificial visc.    artificial_viscosity.h  (alpha or beta > 0)
+// plus gravity: dv_a/dt = g + sum_b (...). Wall neighbours enter with their Adami-interpolated
+// pressure and density; in the viscous terms with the mirrored velocity (no-slip) or not at all
+// (free-slip). Terms that are off are compiled out of the pair loop (template flags).
+#pragma once
+
+#include "fluid_solver/fluid_params.h"
+#include "fluid_solver/fluid_particles.h"
+#include "sph/neighbour_list.h"
+
+namespace porosph::fluid {
+
+struct RateSummary {
+  double max_speed = 0.0;               ///< max |v_a| over water particles
+  double max_total_acceleration = 0.0;  ///< max |dv_a/dt + interaction_a| (for eq. 21)
+};
+
+/// Pressure and sound speed of the water particles from their density (eq. 4).
+template <int D>
+void update_water_pressure(const FluidParams<D>& params, FluidParticles<D>& P);
+
+/// Fills P.acceleration and P.density_rate of the water particles. Walls must be up to date
+/// (update_wall_state) and water pressures too (update_water_pressure).
+template <int D, class Kernel>
+RateSummary compute_fluid_rates(const sph::NeighbourList<D>& neighbours, const Kernel& kernel,
+                                const FluidParams<D>& params, FluidParticles<D>& P);
+
+}  // namespace porosph::fluid

@@ -1,0 +1,372 @@
+#include "fluid_solver/fluid_solver.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include "fluid_solver/density_filter.h"
+#include "fluid_solver/fluid_rates.h"
+#include "fluid_solver/hydrostatic_initial.h"
+#include "fluid_solver/wall_boundary.h"
+#include "sph/geometry.h"
+#include "sph/integrator.h"
+
+namespace porosph::fluid {
+namespace {
+
+/// Water particles are re-sorted by cell this often (steps), for memory locality of the pair loops.
+constexpr std::uint64_t kReorderEvery = 20;
+
+class StopWatch {
+ public:
+  explicit StopWatch(double& total) : total_(total), start_(std::chrono::steady_clock::now()) {}
+  ~StopWatch() {
+    total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+ private:
+  double& total_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace
+
+template <int D>
+FluidSolver<D>::FluidSolver(const scene::Scene& s)
+    : params_(FluidParams<D>::from_scene(s)),
+      box_(sph::DomainBox<D>::from_scene(s, 2.0 * params_.h)),
+      cubic_(params_.h),
+      wendland_(params_.h) {
+  using Vec = sph::Vec<D>;
+  if (s.run.kernel == "cubic_spline") {
+    kernel_kind_ = KernelKind::CubicSpline;
+  } else if (s.run.kernel == "wendland_c2") {
+    kernel_kind_ = KernelKind::WendlandC2;
+  } else {
+    throw std::invalid_argument("run.kernel: unknown kernel '" + s.run.kernel + "'");
+  }
+  for (const auto& o : s.observables)
+    if (o.phase == "water") observables_.push_back(sph::prepare_observable<D>(o));
+
+  const double dp = params_.dp;
+  std::vector<Vec> water, walls;
+  std::vector<double> wall_remove_at;
+  for (const auto& block : s.water->blocks) {
+    for (const Vec& x : sph::fill_block_outside_walls<D>(block, s.walls, dp)) {
+      Vec wrapped = x;
+      box_.wrap(wrapped);
+      if (!box_.outside(x) && wrapped == x) water.push_back(x);
+    }
+  }
+  for (const auto& wall : s.walls) {
+    for (const Vec& x : sph::fill_shape<D>(wall, dp)) {
+      Vec wrapped = x;  // along periodic axes the domain itself closes the flow: no wall beyond it
+      box_.wrap(wrapped);
+      if (wrapped != x) continue;
+      walls.push_back(x);
+      wall_remove_at.push_back(wall.remove_at);
+      if (wall.remove_at >= 0.0 &&
+          (next_wall_removal_ < 0.0 || wall.remove_at < next_wall_removal_))
+        next_wall_removal_ = wall.remove_at;
+    }
+  }
+  FluidParticles<D>& P = particles_;
+  const std::size_t n = water.size() + walls.size();
+  P.n_free = water.size();
+  P.for_each_array([n](auto& array) { array.resize(n); });
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool wall = i >= P.n_free;
+    P.position[i] = wall ? walls[i - P.n_free] : water[i];
+    P.velocity[i] = P.velocity_previous[i] = P.acceleration[i] = Vec::Zero();
+    P.interaction[i] = P.wall_velocity[i] = Vec::Zero();
+    P.density[i] = params_.eos.rho0();
+    P.pressure[i] = P.density_rate[i] = 0.0;
+    P.sound_speed[i] = params_.eos.c0();
+    P.remove_at[i] = wall ? wall_remove_at[i - P.n_free] : -1.0;
+    P.id[i] = static_cast<std::int64_t>(i);
+    P.fixed[i] = wall ? 1 : 0;
+  }
+  if (params_.hydrostatic_initial) {
+    hydrostatic_state<D>(P.position.data(), P.n_free, params_.gravity, dp, params_.eos,
+                         P.pressure.data(), P.density.data());
+  }
+  // m = rho(t=0) dp^D: the particle volume m/rho equals the lattice volume dp^D, so the initial
+  // hydrostatic state is an SPH equilibrium (with m = rho0 dp^D the volumes of the compressed deep
+  // particles are too small and a still tank slowly settles to pressures ~2 % too high at depth).
+  for (std::size_t i = 0; i < n; ++i) P.mass[i] = P.density[i] * params_.volume;
+  P.density_previous = P.density;
+  reorder_by_cell();
+}
+
+template <int D>
+void FluidSolver<D>::build_neighbours() {
+  neighbours_.build(particles_.position.data(), particles_.size(), particles_.n_free,
+                    2.0 * params_.h, box_);
+}
+
+template <int D>
+void FluidSolver<D>::reorder_by_cell() {
+  build_neighbours();
+  const std::size_t n_free = particles_.n_free;
+  order_scratch_.clear();
+  for (std::int32_t i : neighbours_.cell_order())
+    if (static_cast<std::size_t>(i) < n_free) order_scratch_.push_back(i);
+  if (step_ == 0) {  // walls never move: sorted once
+    for (std::int32_t i : neighbours_.cell_order())
+      if (static_cast<std::size_t>(i) >= n_free) order_scratch_.push_back(i);
+  } else {
+    for (std::size_t i = n_free; i < particles_.size(); ++i)
+      order_scratch_.push_back(static_cast<std::int32_t>(i));
+  }
+  particles_.permute(order_scratch_);
+  build_neighbours();
+}
+
+template <int D>
+void FluidSolver<D>::compute_rates() {
+  StopWatch watch(physics_seconds_);
+  if (step_ > 0 && step_ % kReorderEvery == 0) {
+    reorder_by_cell();
+  } else {
+    build_neighbours();
+  }
+  if (kernel_kind_ == KernelKind::CubicSpline) {
+    compute_rates_with(cubic_);
+  } else {
+    compute_rates_with(wendland_);
+  }
+}
+
+template <int D>
+template <class Kernel>
+void FluidSolver<D>::compute_rates_with(const Kernel& kernel) {
+  const int every = params_.density_filter_every;
+  filtered_this_step_ = every > 0 && step_ > 0 && step_ % static_cast<std::uint64_t>(every) == 0;
+  update_water_pressure(params_, particles_);
+  update_wall_state(neighbours_, kernel, params_, particles_);
+  if (filtered_this_step_) {  // the filter uses the wall densities; then walls follow the water
+    shepard_density_filter(neighbours_, kernel, particles_, filter_scratch_);
+    update_water_pressure(params_, particles_);
+    update_wall_state(neighbours_, kernel, params_, particles_);
+  }
+  const RateSummary r = compute_fluid_rates(neighbours_, kernel, params_, particles_);
+  limits_ = time_step_limits(params_.h, params_.eos.c0(), r.max_speed,
+                             params_.mu / params_.eos.rho0(), r.max_total_acceleration, params_.cfl,
+                             params_.viscous_coefficient, params_.c_a);
+}
+
+template <int D>
+double FluidSolver<D>::evaluate(const sph::PreparedObservable<D>& o,
+                                const sph::ParticleView<D>& view) const {
+  if (kernel_kind_ == KernelKind::CubicSpline) return sph::evaluate_observable(o, view, cubic_);
+  return sph::evaluate_observable(o, view, wendland_);
+}
+
+template <int D>
+void FluidSolver<D>::fill_state(coupling::StepState& out, const std::vector<double>& overlap_min,
+                                const std::vector<double>& overlap_max) {
+  using Vec = sph::Vec<D>;
+  StopWatch watch(physics_seconds_);
+  const FluidParticles<D>& P = particles_;
+  const std::int64_t n = static_cast<std::int64_t>(P.n_free);
+  out.step = step_;
+  out.time = time_;
+  out.dt_cfl = limits_.cfl;
+  out.dt_viscous = limits_.viscous;
+  out.dt_force = limits_.force;
+  out.dt_limit = limits_.min();
+
+  // Overlap set.
+  overlap_index_.clear();
+  out.overlap_id.clear();
+  out.overlap_position.clear();
+  out.overlap_velocity.clear();
+  out.overlap_density.clear();
+  out.overlap_mass.clear();
+  out.overlap_porosity.clear();
+  out.overlap_material.clear();
+  if (!overlap_min.empty() && !overlap_max.empty()) {
+    const Vec lo = sph::to_vec<D>(overlap_min, "overlap_min");
+    const Vec hi = sph::to_vec<D>(overlap_max, "overlap_max");
+    for (std::int64_t a = 0; a < n; ++a) {
+      const Vec& x = P.position[a];
+      if ((x.array() < lo.array()).any() || (x.array() > hi.array()).any()) continue;
+      overlap_index_.push_back(static_cast<std::int32_t>(a));
+      out.overlap_id.push_back(P.id[a]);
+      for (int k = 0; k < D; ++k) out.overlap_position.push_back(x[k]);
+      for (int k = 0; k < D; ++k) out.overlap_velocity.push_back(P.velocity[a][k]);
+      out.overlap_density.push_back(P.density[a]);
+      out.overlap_mass.push_back(P.mass[a]);
+    }
+  }
+
+  // Diagnostics of the water particles: one parallel pass.
+  double mass = 0.0, energy = 0.0, max_v2 = 0.0;
+  double momentum[D] = {}, lo[D], hi[D];
+  std::fill(lo, lo + D, std::numeric_limits<double>::infinity());
+  std::fill(hi, hi + D, -std::numeric_limits<double>::infinity());
+#pragma omp parallel for schedule(static) reduction(+ : mass, energy, momentum[:D]) \
+    reduction(max : max_v2, hi[:D]) reduction(min : lo[:D])
+  for (std::int64_t a = 0; a < n; ++a) {
+    const double v2 = P.velocity[a].squaredNorm();
+    mass += P.mass[a];
+    energy += 0.5 * P.mass[a] * v2;
+    max_v2 = std::max(max_v2, v2);
+    for (int k = 0; k < D; ++k) {
+      momentum[k] += P.mass[a] * P.velocity[a][k];
+      lo[k] = std::min(lo[k], P.position[a][k]);
+      hi[k] = std::max(hi[k], P.position[a][k]);
+    }
+  }
+  out.region_min.assign(lo, lo + D);
+  out.region_max.assign(hi, hi + D);
+  coupling::Diagnostics& d = out.diagnostics;
+  d.particle_count = P.size();
+  d.free_count = P.n_free;
+  d.removed_count = removed_count_;
+  d.mass = mass;
+  d.kinetic_energy = energy;
+  d.max_speed = std::sqrt(max_v2);
+  d.momentum.assign(momentum, momentum + D);
+  const sph::ParticleView<D> view{P.position.data(), P.velocity.data(), P.mass.data(),
+                                  P.pressure.data(), P.n_free};
+  for (const auto& o : observables_) d.observables[o.name] = evaluate(o, view);
+  d.physics_seconds = physics_seconds_;
+}
+
+template <int D>
+void FluidSolver<D>::add_interaction(const std::vector<double>& acceleration) {
+  if (acceleration.size() != overlap_index_.size() * D) {
+    throw std::invalid_argument("add_interaction: expected " +
+                                std::to_string(overlap_index_.size() * D) + " values, got " +
+                                std::to_string(acceleration.size()));
+  }
+  std::fill(particles_.interaction.begin(), particles_.interaction.end(), sph::Vec<D>::Zero());
+  for (std::size_t i = 0; i < overlap_index_.size(); ++i) {
+    for (int k = 0; k < D; ++k)
+      particles_.interaction[overlap_index_[i]][k] = acceleration[i * D + k];
+  }
+  interaction_fresh_ = true;
+  interaction_nonzero_ = true;
+}
+
+template <int D>
+void FluidSolver<D>::advance(double dt) {
+  StopWatch watch(physics_seconds_);
+  FluidParticles<D>& P = particles_;
+  if (!interaction_fresh_ && interaction_nonzero_) {  // none this step, nor in next step's eq. 21
+    std::fill(P.interaction.begin(), P.interaction.end(), sph::Vec<D>::Zero());
+    interaction_nonzero_ = false;
+  }
+  interaction_fresh_ = false;
+  const bool euler = sph::is_euler_step(step_, params_.euler_every) || filtered_this_step_;
+  const std::int64_t n = static_cast<std::int64_t>(P.n_free);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t a = 0; a < n; ++a) {
+    sph::verlet_step<D>(P.position[a], P.velocity[a], P.velocity_previous[a],
+                        P.acceleration[a] + P.interaction[a], dt, euler);
+    sph::verlet_step_scalar(P.density[a], P.density_previous[a], P.density_rate[a], dt, euler);
+    box_.wrap(P.position[a]);
+  }
+  remove_particles_outside();
+  time_ += dt;
+  ++step_;
+  remove_expired_walls();
+}
+
+template <int D>
+void FluidSolver<D>::remove_particles_outside() {
+  const FluidParticles<D>& P = particles_;
+  const std::int64_t n = static_cast<std::int64_t>(P.n_free);
+  std::int64_t outside = 0;
+#pragma omp parallel for schedule(static) reduction(+ : outside)
+  for (std::int64_t a = 0; a < n; ++a) outside += box_.outside(P.position[a]) ? 1 : 0;
+  if (outside == 0) return;
+  keep_scratch_.assign(P.size(), 1);
+  for (std::int64_t a = 0; a < n; ++a) keep_scratch_[a] = box_.outside(P.position[a]) ? 0 : 1;
+  removed_count_ += particles_.compact(keep_scratch_);
+}
+
+template <int D>
+void FluidSolver<D>::remove_expired_walls() {
+  if (next_wall_removal_ < 0.0 || time_ < next_wall_removal_) return;
+  FluidParticles<D>& P = particles_;
+  keep_scratch_.assign(P.size(), 1);
+  next_wall_removal_ = -1.0;
+  for (std::size_t w = P.n_free; w < P.size(); ++w) {
+    const double t = P.remove_at[w];
+    if (t < 0.0) continue;
+    if (t <= time_) {
+      keep_scratch_[w] = 0;
+    } else if (next_wall_removal_ < 0.0 || t < next_wall_removal_) {
+      next_wall_removal_ = t;
+    }
+  }
+  P.compact(keep_scratch_);
+}
+
+template <int D>
+std::optional<std::string> FluidSolver<D>::find_non_finite(std::int64_t* particle_id) const {
+  const FluidParticles<D>& P = particles_;
+  const std::int64_t n = static_cast<std::int64_t>(P.size());
+  std::int64_t first = n;
+#pragma omp parallel for schedule(static) reduction(min : first)
+  for (std::int64_t a = 0; a < n; ++a) {
+    if (!P.position[a].allFinite() || !P.velocity[a].allFinite() || !std::isfinite(P.density[a]))
+      first = std::min(first, a);
+  }
+  if (first == n) return std::nullopt;
+  const char* what = !P.position[first].allFinite()   ? "position"
+                     : !P.velocity[first].allFinite() ? "velocity"
+                                                      : "density";
+  std::ostringstream msg;
+  msg << "non-finite " << what << " of " << (P.fixed[first] ? "wall" : "water") << " particle "
+      << P.id[first] << " (x = ";
+  for (int k = 0; k < D; ++k) msg << (k ? ", " : "") << P.position[first][k];
+  msg << "; v = ";
+  for (int k = 0; k < D; ++k) msg << (k ? ", " : "") << P.velocity[first][k];
+  msg << "; rho = " << P.density[first] << ") at step " << step_ << ", t = " << time_ << " s";
+  if (particle_id != nullptr) *particle_id = P.id[first];
+  return msg.str();
+}
+
+template <int D>
+std::vector<io::FieldView> FluidSolver<D>::snapshot_fields() const {
+  const FluidParticles<D>& P = particles_;
+  const std::size_t n = P.size();
+  auto f64 = [n](const char* name, std::size_t cols, const double* data) {
+    io::FieldView f;
+    f.name = name;
+    f.rows = n;
+    f.cols = cols;
+    f.f64 = data;
+    f.type = io::FieldType::F64;
+    return f;
+  };
+  std::vector<io::FieldView> fields;
+  fields.push_back(f64("position", D, n ? P.position[0].data() : nullptr));
+  fields.push_back(f64("velocity", D, n ? P.velocity[0].data() : nullptr));
+  fields.push_back(f64("density", 1, P.density.data()));
+  fields.push_back(f64("pressure", 1, P.pressure.data()));
+  io::FieldView id;
+  id.name = "id";
+  id.rows = n;
+  id.i64 = P.id.data();
+  id.type = io::FieldType::I64;
+  fields.push_back(id);
+  io::FieldView fixed;
+  fixed.name = "fixed";
+  fixed.rows = n;
+  fixed.u8 = P.fixed.data();
+  fixed.type = io::FieldType::U8;
+  fields.push_back(fixed);
+  return fields;
+}
+
+template class FluidSolver<2>;
+template class FluidSolver<3>;
+
+}  // namespace porosph::fluid

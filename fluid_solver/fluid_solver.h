@@ -1,0 +1,108 @@
+// The water phase solver (weakly compressible SPH, seed paper eq. 2-4 and 21): owns the water and
+// wall particles, computes the internal accelerations, reports its state to the coupler and
+// integrates with the shared dt. The coupling loop (fluid_solver/main.cpp) drives it:
+//   compute_rates(); fill_state(state, ...); <exchange>; add_interaction(a); advance(dt);
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fluid_solver/fluid_params.h"
+#include "fluid_solver/fluid_particles.h"
+#include "fluid_solver/time_step_limits.h"
+#include "io/snapshot_writer.h"
+#include "proto/coupling_client.h"
+#include "scene/scene.h"
+#include "sph/domain_box.h"
+#include "sph/kernels.h"
+#include "sph/neighbour_list.h"
+#include "sph/observables.h"
+
+namespace porosph::fluid {
+
+template <int D>
+class FluidSolver {
+ public:
+  /// Particles from scene.water.blocks (lattice points inside wall shapes skipped, points outside
+  /// the domain dropped) and from scene.walls (points beyond a periodic axis' range dropped).
+  /// Masses are m = rho(t=0) dp^D. Throws std::invalid_argument on a bad scene.
+  explicit FluidSolver(const scene::Scene& scene);
+
+  /// Neighbour search + wall state + all internal accelerations and drho/dt (+ density filter on
+  /// its steps).
+  void compute_rates();
+  /// Time-step limits of the state of the last compute_rates().
+  DtLimits dt_limits() const { return limits_; }
+
+  /// Diagnostics of the water particles and the overlap set: the water particles inside
+  /// [overlap_min, overlap_max] (empty vectors: no overlap particles). Reuses out's vectors.
+  /// region_min/max is the bounding box of the water (min = +inf, max = -inf when there is none).
+  void fill_state(coupling::StepState& out, const std::vector<double>& overlap_min,
+                  const std::vector<double>& overlap_max);
+  /// Adds accelerations (n*D, row-major) to the overlap particles of the last fill_state, same
+  /// order. Throws std::invalid_argument on a size mismatch.
+  void add_interaction(const std::vector<double>& acceleration);
+  /// Modified Verlet step, periodic wrap, removal of particles leaving the domain, removal of walls
+  /// whose time has come; time += dt; ++step.
+  void advance(double dt);
+
+  /// "non-finite velocity of particle 123 (x = ...)" and *particle_id = 123, or std::nullopt when
+  /// every position, velocity and density is finite.
+  std::optional<std::string> find_non_finite(std::int64_t* particle_id) const;
+  /// position, velocity, density, pressure, id (i64), fixed (u8) of every particle incl. walls;
+  /// the views stay valid until the next compute_rates/advance.
+  std::vector<io::FieldView> snapshot_fields() const;
+
+  double time() const { return time_; }
+  std::uint64_t step() const { return step_; }
+  std::size_t particle_count() const { return particles_.size(); }
+  std::size_t free_count() const { return particles_.n_free; }
+  std::uint64_t removed_count() const { return removed_count_; }
+
+  // Read access for tests and tools.
+  const FluidParticles<D>& particles() const { return particles_; }
+  const FluidParams<D>& params() const { return params_; }
+  const sph::NeighbourList<D>& neighbours() const { return neighbours_; }
+
+ private:
+  enum class KernelKind { CubicSpline, WendlandC2 };
+  template <class Kernel>
+  void compute_rates_with(const Kernel& kernel);
+  void build_neighbours();
+  void reorder_by_cell();
+  void remove_particles_outside();
+  void remove_expired_walls();
+  double evaluate(const sph::PreparedObservable<D>& o, const sph::ParticleView<D>& view) const;
+
+  FluidParams<D> params_;
+  sph::DomainBox<D> box_;
+  KernelKind kernel_kind_ = KernelKind::CubicSpline;
+  sph::CubicSpline<D> cubic_;
+  sph::WendlandC2<D> wendland_;
+  std::vector<sph::PreparedObservable<D>> observables_;
+
+  FluidParticles<D> particles_;
+  sph::NeighbourList<D> neighbours_;
+  DtLimits limits_;
+  double time_ = 0.0;
+  std::uint64_t step_ = 0;
+  std::uint64_t removed_count_ = 0;
+  bool filtered_this_step_ = false;
+  bool interaction_fresh_ = false;    ///< add_interaction called since the last advance
+  bool interaction_nonzero_ = false;  ///< particles_.interaction may hold non-zero values
+  double next_wall_removal_ = -1.0;   ///< earliest pending wall removal time (< 0: none)
+  double physics_seconds_ = 0.0;
+
+  std::vector<std::int32_t> overlap_index_;
+  std::vector<std::int32_t> order_scratch_;
+  std::vector<std::uint8_t> keep_scratch_;
+  std::vector<double> filter_scratch_;
+};
+
+extern template class FluidSolver<2>;
+extern template class FluidSolver<3>;
+
+}  // namespace porosph::fluid

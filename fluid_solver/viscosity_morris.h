@@ -1,0 +1,23 @@
+// Laminar viscosity of Morris, Fox & Zhu (1997), J. Comput. Phys. 136, 214-226, eq. 8 there; the
+// second term of the seed paper eq. 3:
+//   (dv_a/dt)_visc = sum_b m_b (mu_a + mu_b) / (rho_a rho_b) (1/r_ab dW/dr) v_ab,
+// with the regularised factor (1/r dW/dr) -> x_ab . grad_a W_ab / (r_ab^2 + eta^2), eta^2 = 0.01
+// h^2, which is finite when r_ab -> 0 and equal to (1/r) dW/dr for r >> eta. Since dW/dr <= 0 the
+// term opposes v_ab: it is dissipative.
+#pragma once
+
+#include "sph/vector.h"
+
+namespace porosph::fluid {
+
+/// Acceleration of a due to b from the Morris term; eta2 = 0.01 h^2.
+template <int D>
+inline sph::Vec<D> morris_viscous_acceleration(double m_b, double mu_a, double mu_b, double rho_a,
+                                               double rho_b, const sph::Vec<D>& x_ab, double r,
+                                               const sph::Vec<D>& grad_w, const sph::Vec<D>& v_ab,
+                                               double eta2) {
+  const double factor = x_ab.dot(grad_w) / (r * r + eta2);
+  return (m_b * (mu_a + mu_b) / (rho_a * rho_b) * factor) * v_ab;
+}
+
+}  // namespace porosph::fluid

@@ -1,0 +1,122 @@
+// SPH smoothing kernels, used as template parameters of the particle loops.
+//
+// Every kernel K<D> offers, for a smoothing length h fixed at construction:
+//   w(r)            W(r, h)
+//   dw_dr(r)        dW/dr
+//   grad_factor(r)  (1/r) dW/dr, finite at r -> 0, so that grad_a W_ab = grad_factor(r) x_ab
+//   gradient(x_ab, r)  grad_a W_ab with x_ab = x_a - x_b, r = |x_ab|
+//   support()       radius beyond which W = 0 (2h for both kernels here)
+#pragma once
+
+#include <cmath>
+
+#include "sph/vector.h"
+
+namespace porosph::sph {
+
+/// Cubic B-spline (M4) kernel of Monaghan (1992), "Smoothed particle hydrodynamics",
+/// Annu. Rev. Astron. Astrophys. 30, 543-574; the kernel of the seed paper. With q = r/h:
+///   W = sigma (1 - 3/2 q^2 + 3/4 q^3)   0 <= q < 1
+///   W = sigma / 4 (2 - q)^3             1 <= q < 2,   0 beyond,
+/// sigma = 10 / (7 pi h^2) in 2D and 1 / (pi h^3) in 3D.
+template <int D>
+class CubicSpline {
+  static_assert(D == 2 || D == 3, "CubicSpline: D must be 2 or 3");
+
+ public:
+  static constexpr const char* kName = "cubic_spline";
+  static constexpr int kDim = D;
+
+  explicit CubicSpline(double h)
+      : h_(h),
+        inv_h_(1.0 / h),
+        sigma_(D == 2 ? 10.0 / (7.0 * M_PI * h * h) : 1.0 / (M_PI * h * h * h)) {}
+
+  double h() const { return h_; }
+  double support() const { return 2.0 * h_; }
+
+  double w(double r) const {
+    const double q = r * inv_h_;
+    if (q < 1.0) return sigma_ * (1.0 - 1.5 * q * q + 0.75 * q * q * q);
+    if (q < 2.0) {
+      const double t = 2.0 - q;
+      return 0.25 * sigma_ * t * t * t;
+    }
+    return 0.0;
+  }
+
+  double dw_dr(double r) const {
+    const double q = r * inv_h_;
+    if (q < 1.0) return sigma_ * inv_h_ * (-3.0 * q + 2.25 * q * q);
+    if (q < 2.0) {
+      const double t = 2.0 - q;
+      return -0.75 * sigma_ * inv_h_ * t * t;
+    }
+    return 0.0;
+  }
+
+  double grad_factor(double r) const {
+    const double q = r * inv_h_;
+    if (q < 1.0) return sigma_ * inv_h_ * inv_h_ * (-3.0 + 2.25 * q);
+    if (q < 2.0) {
+      const double t = 2.0 - q;
+      return -0.75 * sigma_ * inv_h_ * t * t / r;
+    }
+    return 0.0;
+  }
+
+  Vec<D> gradient(const Vec<D>& x_ab, double r) const { return grad_factor(r) * x_ab; }
+
+ private:
+  double h_, inv_h_, sigma_;
+};
+
+/// Wendland C2 kernel (Wendland 1995, Adv. Comput. Math. 4, 389-396), in the support-2h form of
+/// Dehnen & Aly (2012) / DualSPHysics. With q = r/h:
+///   W = alpha (1 - q/2)^4 (2 q + 1)    0 <= q < 2,   0 beyond,
+/// alpha = 7 / (4 pi h^2) in 2D and 21 / (16 pi h^3) in 3D;  dW/dr = -5 alpha q (1 - q/2)^3 / h.
+template <int D>
+class WendlandC2 {
+  static_assert(D == 2 || D == 3, "WendlandC2: D must be 2 or 3");
+
+ public:
+  static constexpr const char* kName = "wendland_c2";
+  static constexpr int kDim = D;
+
+  explicit WendlandC2(double h)
+      : h_(h),
+        inv_h_(1.0 / h),
+        alpha_(D == 2 ? 7.0 / (4.0 * M_PI * h * h) : 21.0 / (16.0 * M_PI * h * h * h)) {}
+
+  double h() const { return h_; }
+  double support() const { return 2.0 * h_; }
+
+  double w(double r) const {
+    const double q = r * inv_h_;
+    if (q >= 2.0) return 0.0;
+    const double t = 1.0 - 0.5 * q;
+    const double t2 = t * t;
+    return alpha_ * t2 * t2 * (2.0 * q + 1.0);
+  }
+
+  double dw_dr(double r) const {
+    const double q = r * inv_h_;
+    if (q >= 2.0) return 0.0;
+    const double t = 1.0 - 0.5 * q;
+    return -5.0 * alpha_ * inv_h_ * q * t * t * t;
+  }
+
+  double grad_factor(double r) const {
+    const double q = r * inv_h_;
+    if (q >= 2.0) return 0.0;
+    const double t = 1.0 - 0.5 * q;
+    return -5.0 * alpha_ * inv_h_ * inv_h_ * t * t * t;
+  }
+
+  Vec<D> gradient(const Vec<D>& x_ab, double r) const { return grad_factor(r) * x_ab; }
+
+ private:
+  double h_, inv_h_, alpha_;
+};
+
+}  // namespace porosph::sph

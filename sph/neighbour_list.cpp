@@ -1,0 +1,265 @@
+#include "sph/neighbour_list.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace porosph::sph {
+
+template <int D>
+void NeighbourList<D>::build(const Vec<D>* x, std::size_t n, std::size_t n_free, double support,
+                             const DomainBox<D>& box) {
+  n_ = n;
+  n_free_ = std::min(n_free, n);
+  support_ = support;
+  box_ = box;
+  begin_.resize(n);
+  mid_.resize(n);
+  end_.resize(n);
+  pair_count_ = 0;
+  if (n == 0) return;
+  setup_grid(x);
+  sort_into_cells(x);
+  if (box.any_periodic()) {
+    fill_lists<true>(x);
+  } else {
+    fill_lists<false>(x);
+  }
+}
+
+template <int D>
+void NeighbourList<D>::setup_grid(const Vec<D>* x) {
+  // Bounding box of the finite coordinates (non-periodic axes only matter).
+  Vec<D> lo = Vec<D>::Constant(std::numeric_limits<double>::infinity());
+  Vec<D> hi = -lo;
+  const std::int64_t n = static_cast<std::int64_t>(n_);
+#pragma omp parallel
+  {
+    Vec<D> tlo = lo, thi = hi;
+#pragma omp for schedule(static) nowait
+    for (std::int64_t a = 0; a < n; ++a) {
+      for (int k = 0; k < D; ++k) {
+        const double v = x[a][k];
+        if (!std::isfinite(v)) continue;
+        tlo[k] = std::min(tlo[k], v);
+        thi[k] = std::max(thi[k], v);
+      }
+    }
+#pragma omp critical(porosph_sph_bbox)
+    {
+      lo = lo.cwiseMin(tlo);
+      hi = hi.cwiseMax(thi);
+    }
+  }
+  // Cell size >= support; grown if the grid would have far more cells than particles (sparse
+  // particles in a large box), which only costs candidate checks, never correctness.
+  const double max_cells = std::max<double>(64.0, 4.0 * static_cast<double>(n_));
+  double cell = support_;
+  for (int attempt = 0; attempt < 64; ++attempt) {
+    double total = 1.0;
+    for (int k = 0; k < D; ++k) {
+      std::int64_t nk = 1;
+      if (box_.periodic[k]) {
+        origin_[k] = box_.min[k];
+        nk = std::max<std::int64_t>(1, static_cast<std::int64_t>(box_.length(k) / cell));
+        inv_cell_size_[k] = static_cast<double>(nk) / box_.length(k);
+      } else {
+        if (!(lo[k] <= hi[k])) lo[k] = hi[k] = 0.0;  // no finite coordinate at all
+        origin_[k] = lo[k];
+        nk = static_cast<std::int64_t>((hi[k] - lo[k]) / cell) + 1;
+        inv_cell_size_[k] = 1.0 / cell;
+      }
+      cells_per_axis_[k] = nk;
+      total *= static_cast<double>(nk);
+    }
+    if (total <= max_cells) break;
+    cell *= 1.5;
+  }
+  cell_count_ = 1;
+  for (int k = 0; k < D; ++k) cell_count_ *= cells_per_axis_[k];
+}
+
+template <int D>
+std::int64_t NeighbourList<D>::cell_index(const Vec<D>& x) const {
+  std::int64_t linear = 0, stride = 1;
+  for (int k = 0; k < D; ++k) {
+    const double s = (x[k] - origin_[k]) * inv_cell_size_[k];
+    const std::int64_t nk = cells_per_axis_[k];
+    // Clamping keeps stray (or non-finite) coordinates in the grid; adjacent cells stay adjacent.
+    std::int64_t c = 0;
+    if (s >= static_cast<double>(nk)) {
+      c = nk - 1;
+    } else if (s > 0.0) {
+      c = static_cast<std::int64_t>(s);
+    }
+    linear += c * stride;
+    stride *= nk;
+  }
+  return linear;
+}
+
+template <int D>
+void NeighbourList<D>::sort_into_cells(const Vec<D>* x) {
+  // Parallel counting sort, stable: thread t owns particles [a0_t, a1_t) and, within every cell,
+  // the slots after those of threads < t; free particles (the lower indices) come first in a cell.
+  cell_of_.resize(n_);
+  sorted_index_.resize(n_);
+  sorted_position_.resize(n_);
+  cell_start_.resize(cell_count_ + 1);
+  cell_free_end_.resize(cell_count_);
+  const int max_threads = omp_get_max_threads();
+  if (static_cast<int>(thread_counts_.size()) < max_threads) thread_counts_.resize(max_threads);
+  const std::int64_t cells = cell_count_;
+#pragma omp parallel
+  {
+    const std::size_t t = omp_get_thread_num(), threads = omp_get_num_threads();
+    const std::size_t a0 = n_ * t / threads, a1 = n_ * (t + 1) / threads;
+    std::vector<std::int32_t>& count = thread_counts_[t];
+    count.assign(2 * cells, 0);  // [0, cells): all particles, [cells, 2 cells): free ones
+    for (std::size_t a = a0; a < a1; ++a) {
+      const std::int64_t c = cell_index(x[a]);
+      cell_of_[a] = c;
+      ++count[c];
+      if (a < n_free_) ++count[cells + c];
+    }
+#pragma omp barrier
+#pragma omp single
+    {
+      std::int32_t offset = 0;
+      for (std::int64_t c = 0; c < cells; ++c) {
+        cell_start_[c] = offset;
+        std::int32_t free_in_cell = 0;
+        for (std::size_t u = 0; u < threads; ++u) {
+          const std::int32_t k = thread_counts_[u][c];
+          free_in_cell += thread_counts_[u][cells + c];
+          thread_counts_[u][c] = offset;  // becomes thread u's cursor in cell c
+          offset += k;
+        }
+        cell_free_end_[c] = cell_start_[c] + free_in_cell;
+      }
+      cell_start_[cells] = offset;
+    }  // implicit barrier
+    for (std::size_t a = a0; a < a1; ++a) {
+      const std::int32_t slot = count[cell_of_[a]]++;
+      sorted_index_[slot] = static_cast<std::int32_t>(a);
+      sorted_position_[slot] = x[a];
+    }
+  }
+}
+
+template <int D>
+int NeighbourList<D>::stencil_of(std::int64_t cell, std::int64_t* out) const {
+  // Per axis the distinct neighbouring cell coordinates (1 to 3 of them).
+  std::int64_t axis_cells[D][3];
+  int axis_count[D];
+  std::int64_t rest = cell;
+  for (int k = 0; k < D; ++k) {
+    const std::int64_t nk = cells_per_axis_[k];
+    const std::int64_t c = rest % nk;
+    rest /= nk;
+    int m = 0;
+    if (box_.periodic[k]) {
+      if (nk >= 3) {
+        axis_cells[k][m++] = (c + nk - 1) % nk;
+        axis_cells[k][m++] = c;
+        axis_cells[k][m++] = (c + 1) % nk;
+      } else {
+        for (std::int64_t j = 0; j < nk; ++j) axis_cells[k][m++] = j;
+      }
+    } else {
+      for (std::int64_t j = std::max<std::int64_t>(0, c - 1); j <= std::min(nk - 1, c + 1); ++j) {
+        axis_cells[k][m++] = j;
+      }
+    }
+    axis_count[k] = m;
+  }
+  int count = 0;
+  int idx[D] = {};
+  while (true) {
+    std::int64_t linear = 0, stride = 1;
+    for (int k = 0; k < D; ++k) {
+      linear += axis_cells[k][idx[k]] * stride;
+      stride *= cells_per_axis_[k];
+    }
+    out[count++] = linear;
+    int k = 0;
+    while (k < D && ++idx[k] == axis_count[k]) idx[k++] = 0;
+    if (k == D) break;
+  }
+  return count;
+}
+
+template <int D>
+template <bool kPeriodic>
+void NeighbourList<D>::fill_lists(const Vec<D>* x) {
+  // Chunks of particles are handed out dynamically (robust to load imbalance and to a core shared
+  // with another process); each thread appends the lists of its chunks to its own buffer.
+  constexpr std::size_t kChunk = 256;
+  const std::int64_t chunks = static_cast<std::int64_t>((n_ + kChunk - 1) / kChunk);
+  const int max_threads = omp_get_max_threads();
+  if (static_cast<int>(buffers_.size()) < max_threads) buffers_.resize(max_threads);
+  offsets_.resize(3 * n_);
+  chunk_owner_.resize(chunks);
+  const double support2 = support_ * support_;
+  std::size_t total = 0;
+#pragma omp parallel reduction(+ : total)
+  {
+    const int t = omp_get_thread_num();
+    std::vector<Pair>& buffer = buffers_[t];
+    buffer.clear();
+    std::int64_t stencil[27];
+    int stencil_size = 0;
+    std::int64_t last_cell = -1;
+    auto scan = [&](std::size_t a, const Vec<D>& xa, std::int32_t j0, std::int32_t j1) {
+      for (std::int32_t j = j0; j < j1; ++j) {
+        const std::int32_t b = sorted_index_[j];
+        Vec<D> dx = xa - sorted_position_[j];
+        if constexpr (kPeriodic) box_.minimum_image(dx);
+        const double r2 = dx.squaredNorm();
+        if (r2 < support2 && b != static_cast<std::int32_t>(a)) {
+          buffer.push_back(Pair{dx, std::sqrt(r2), b});
+        }
+      }
+    };
+#pragma omp for schedule(dynamic, 1)
+    for (std::int64_t chunk = 0; chunk < chunks; ++chunk) {
+      chunk_owner_[chunk] = t;
+      const std::size_t a1 = std::min(n_, static_cast<std::size_t>(chunk + 1) * kChunk);
+      for (std::size_t a = static_cast<std::size_t>(chunk) * kChunk; a < a1; ++a) {
+        if (cell_of_[a] != last_cell) {
+          last_cell = cell_of_[a];
+          stencil_size = stencil_of(last_cell, stencil);
+        }
+        const Vec<D> xa = x[a];
+        offsets_[3 * a] = static_cast<std::uint32_t>(buffer.size());
+        for (int s = 0; s < stencil_size; ++s) {
+          scan(a, xa, cell_start_[stencil[s]], cell_free_end_[stencil[s]]);
+        }
+        offsets_[3 * a + 1] = static_cast<std::uint32_t>(buffer.size());
+        if (a < n_free_) {
+          for (int s = 0; s < stencil_size; ++s) {
+            scan(a, xa, cell_free_end_[stencil[s]], cell_start_[stencil[s] + 1]);
+          }
+        }
+        offsets_[3 * a + 2] = static_cast<std::uint32_t>(buffer.size());
+      }
+    }  // implicit barrier: every buffer is final, offsets become pointers
+    const std::int64_t n = static_cast<std::int64_t>(n_);
+#pragma omp for schedule(static)
+    for (std::int64_t a = 0; a < n; ++a) {
+      const Pair* base = buffers_[chunk_owner_[a / kChunk]].data();
+      begin_[a] = base + offsets_[3 * a];
+      mid_[a] = base + offsets_[3 * a + 1];
+      end_[a] = base + offsets_[3 * a + 2];
+    }
+    total += buffer.size();
+  }
+  pair_count_ = total;
+}
+
+template class NeighbourList<2>;
+template class NeighbourList<3>;
+
+}  // namespace porosph::sph

@@ -1,0 +1,71 @@
+// Hand-made particle sets and scenes for the water-phase tests (scene structs built directly, no
+// TOML parser involved).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "fluid_solver/fluid_params.h"
+#include "fluid_solver/fluid_particles.h"
+#include "scene/scene.h"
+
+namespace porosph::fluid::testing {
+
+inline scene::Shape box(std::vector<double> lo, std::vector<double> hi, double remove_at = -1.0) {
+  scene::Shape s;
+  s.kind = scene::Shape::Kind::Box;
+  s.min = std::move(lo);
+  s.max = std::move(hi);
+  s.remove_at = remove_at;
+  return s;
+}
+
+inline scene::Shape container(std::vector<double> lo, std::vector<double> hi, int layers,
+                              std::vector<std::string> open = {"y+"}) {
+  scene::Shape s = box(std::move(lo), std::move(hi));
+  s.kind = scene::Shape::Kind::Container;
+  s.layers = layers;
+  s.open_faces = std::move(open);
+  return s;
+}
+
+/// A 2D water scene without blocks or walls: rho0 1000, c 20, mu 1e-3, alpha 0.05, g = -9.81 y.
+inline scene::Scene water_scene(double dp, std::vector<double> domain_min,
+                                std::vector<double> domain_max) {
+  scene::Scene s;
+  s.run.dimension = static_cast<int>(domain_min.size());
+  s.run.dp = dp;
+  s.run.h_factor = 1.2;
+  s.run.gravity.assign(domain_min.size(), 0.0);
+  s.run.gravity[1] = -9.81;
+  s.run.periodic.assign(domain_min.size(), false);
+  s.domain.min = std::move(domain_min);
+  s.domain.max = std::move(domain_max);
+  s.water = scene::WaterPhase{};
+  return s;
+}
+
+/// Particles at `x` (the first n_free water), all arrays sized, at rest, rho = rho0, m = m0.
+template <int D>
+FluidParticles<D> make_particles(const std::vector<sph::Vec<D>>& x, std::size_t n_free, double rho0,
+                                 double m0) {
+  FluidParticles<D> P;
+  P.n_free = n_free;
+  const std::size_t n = x.size();
+  P.for_each_array([n](auto& a) { a.resize(n); });
+  for (std::size_t i = 0; i < n; ++i) {
+    P.position[i] = x[i];
+    P.velocity[i] = P.velocity_previous[i] = P.acceleration[i] = sph::Vec<D>::Zero();
+    P.interaction[i] = P.wall_velocity[i] = sph::Vec<D>::Zero();
+    P.density[i] = P.density_previous[i] = rho0;
+    P.pressure[i] = P.density_rate[i] = 0.0;
+    P.sound_speed[i] = 20.0;
+    P.mass[i] = m0;
+    P.remove_at[i] = -1.0;
+    P.id[i] = static_cast<std::int64_t>(i);
+    P.fixed[i] = i >= n_free;
+  }
+  return P;
+}
+
+}  // namespace porosph::fluid::testing
