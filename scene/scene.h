@@ -15,7 +15,8 @@ namespace porosph::scene {
 
 /// A geometric region. Filled with particles on a lattice of spacing dp (centres half a spacing
 /// inside the region), or, for kind == Container, a wall of `layers` particle layers around the
-/// inner box [min, max] with the faces named in `open_faces` left open.
+/// inner box [min, max] with the faces named in `open_faces` left open. The same struct serves
+/// phase blocks and walls; the last fields apply to one use only.
 struct Shape {
   enum class Kind { Box, Polygon, Container };
   Kind kind = Kind::Box;
@@ -25,29 +26,36 @@ struct Shape {
   int layers = 3;                             ///< Container: wall thickness in particle layers
   std::vector<std::string> open_faces;        ///< Container: faces left open, e.g. "y+", "x-"
   std::string label;                          ///< optional name, shown in errors and output
-  double remove_at = -1.0;                    ///< wall only: time [s] the block is removed (<0: never)
+  double remove_at = -1.0;            ///< wall only: time [s] the block is removed (<0: never)
+  std::vector<std::string> phases;    ///< wall only: phases it acts on (the loader always fills it;
+                                      ///< empty, in a Scene built by code: every phase present)
+  std::string condition = "default";  ///< wall only: "default" (the phase's wall_condition) |
+                                      ///< "no_slip" | "free_slip"
+  std::string material;               ///< soil block only: name of its SoilMaterial
 };
 
 /// Global run settings (table [run]); every scene has end_time, output_interval, dp, h_factor.
 struct RunSettings {
   int dimension = 2;
   double end_time = 1.0;         ///< [s]
+  long max_steps = 0;            ///< stop after this many steps even before end_time; 0: no limit
   double output_interval = 0.1;  ///< [s]
   double dp = 0.01;              ///< particle spacing [m]
   double h_factor = 1.2;         ///< smoothing length h = h_factor * dp
   double dt0 = 1e-4;             ///< initial (and largest) time step [s], eq. 21 / Fig. 1
   double cfl = 0.2;              ///< C_cfl in dt_cfl = C_cfl h / (c + |v|max)
   double c_a = 0.25;             ///< C_a of eq. 21 (0.005 is the coupled default)
-  double viscous_coefficient = 0.125;  ///< dt_visc = coeff h^2 / nu
-  bool dt_smoothing = true;            ///< Fig. 1 smoothing on/off (off: dt = min(limits, dt0))
-  int euler_every = 40;                ///< modified Verlet: an Euler step every N steps
-  double solver_timeout = 60.0;        ///< [s] a solver silent this long fails the run
-  std::vector<double> gravity;         ///< [m/s^2], length = dimension
-  std::vector<bool> periodic;          ///< per axis, length = dimension
-  std::string kernel = "cubic_spline"; ///< "cubic_spline" | "wendland_c2"
+  double viscous_coefficient = 0.125;   ///< dt_visc = coeff h^2 / nu
+  bool dt_smoothing = true;             ///< Fig. 1 smoothing on/off (off: dt = min(limits, dt0))
+  int euler_every = 40;                 ///< modified Verlet: an Euler step every N steps
+  double solver_timeout = 60.0;         ///< [s] a solver silent this long fails the run
+  std::vector<double> gravity;          ///< [m/s^2], length = dimension
+  std::vector<bool> periodic;           ///< per axis, length = dimension
+  std::string kernel = "cubic_spline";  ///< "cubic_spline" | "wendland_c2"
 };
 
-/// The simulation box: periodic axes wrap at its faces; particles leaving it are removed and counted.
+/// The simulation box: periodic axes wrap at its faces; particles leaving it are removed and
+/// counted.
 struct Domain {
   std::vector<double> min;
   std::vector<double> max;
@@ -55,28 +63,85 @@ struct Domain {
 
 /// Water phase (table [water]).
 struct WaterPhase {
-  double rho0 = 1000.0;          ///< rest density [kg/m^3]
-  double sound_speed = 20.0;     ///< numerical sound speed c in eq. 4 [m/s]
-  double viscosity = 1.0e-3;     ///< dynamic viscosity mu [Pa s] (Morris 1997 term); 0: off
-  double alpha = 0.05;           ///< Monaghan artificial viscosity alpha; 0: off
-  double beta = 0.0;             ///< Monaghan artificial viscosity beta
-  double gamma = 7.0;            ///< Tait exponent of eq. 4
-  int density_filter_every = 0;  ///< Shepard density re-initialisation every N steps; 0: off
+  double rho0 = 1000.0;             ///< rest density [kg/m^3]
+  double sound_speed = 20.0;        ///< numerical sound speed c in eq. 4 [m/s]
+  double viscosity = 1.0e-3;        ///< dynamic viscosity mu [Pa s] (Morris 1997 term); 0: off
+  double alpha = 0.05;              ///< Monaghan artificial viscosity alpha; 0: off
+  double beta = 0.0;                ///< Monaghan artificial viscosity beta
+  double gamma = 7.0;               ///< Tait exponent of eq. 4
+  int density_filter_every = 0;     ///< Shepard density re-initialisation every N steps; 0: off
   bool hydrostatic_initial = true;  ///< initial density from hydrostatic pressure (inverse eq. 4)
   std::string wall_condition = "no_slip";  ///< "no_slip" | "free_slip"
-  std::string solver;            ///< executable; empty: the built-in fluid_solver
-  std::vector<Shape> blocks;     ///< regions filled with water at t = 0
+  std::string solver;                      ///< executable; empty: the built-in fluid_solver
+  std::vector<Shape> blocks;               ///< regions filled with water at t = 0
+};
+
+/// One soil material ([[soil.materials]]): Drucker-Prager skeleton (eq. 6-12) and the seepage
+/// law the coupler applies between it and the water (eq. 13-15, 20).
+struct SoilMaterial {
+  std::string name;
+  double density = 0.0;            ///< bulk density, weight when dry [kg/m^3]
+  double saturated_density = 0.0;  ///< bulk density with water-filled pores [kg/m^3]; 0: not given
+  double porosity = 0.4;           ///< initial porosity n0
+  /// Both elastic pairs are filled by the loader from whichever the scene gave:
+  /// K = E / (3 (1 - 2 nu)), G = E / (2 (1 + nu)); E = 9 K G / (3 K + G),
+  /// nu = (3 K - 2 G) / (2 (3 K + G)).
+  double young_modulus = 0.0;           ///< E [Pa]
+  double poisson_ratio = 0.0;           ///< nu
+  double bulk_modulus = 0.0;            ///< K [Pa]
+  double shear_modulus = 0.0;           ///< G [Pa]
+  double cohesion = 0.0;                ///< c [Pa]
+  double friction_angle_deg = 0.0;      ///< phi [deg]
+  double dilatancy_angle_deg = 0.0;     ///< psi [deg], <= phi
+  bool artificial_stress = false;       ///< Gray-Monaghan artificial stress on
+  bool fixed = false;                   ///< rigid porous bed: never moves
+  std::string seepage = "none";         ///< "none" | "darcy_kozeny_carman" | "darcy_conductivity" |
+                                        ///< "forchheimer_den_adel"
+  double effective_diameter = 0.0;      ///< d_e [m] (darcy_kozeny_carman; else 0)
+  double d15 = 0.0;                     ///< [m] (forchheimer_den_adel; else 0)
+  double den_adel_alpha = 150.0;        ///< eq. 15 alpha
+  double den_adel_beta = 0.4;           ///< eq. 15 beta
+  double hydraulic_conductivity = 0.0;  ///< [m/s] (darcy_conductivity; else 0)
+  bool variable_permeability = true;    ///< coefficients follow the current porosity (eq. 20)
+  bool wet_cohesion_loss = false;       ///< cohesion vanishes once the particle is wet
+};
+
+/// Soil phase (table [soil]).
+struct SoilPhase {
+  std::string solver;                        ///< executable; empty: the built-in soil_solver
+  std::string wall_condition = "no_slip";    ///< "no_slip" | "free_slip"
+  double alpha = 0.1;                        ///< Monaghan artificial viscosity alpha
+  double beta = 0.1;                         ///< Monaghan artificial viscosity beta
+  double artificial_stress_epsilon = 0.5;    ///< Gray-Monaghan epsilon
+  double artificial_stress_exponent = 2.55;  ///< Gray-Monaghan n
+  double sound_speed = 0.0;  ///< [m/s]; 0: from the stiffest material (stiffest_sound_speed())
+  std::string initial_stress = "none";  ///< "geostatic" | "none"
+  std::string k0 = "jaky";              ///< "jaky" (1 - sin phi) | "elastic" (nu / (1 - nu))
+  double damping_duration = 0.0;        ///< [s] initial damping stage; 0: none
+  double damping_coefficient = 0.02;    ///< D = coefficient sqrt(E / (rho h^2))
+  std::vector<SoilMaterial> materials;
+  std::vector<Shape> blocks;  ///< regions filled with soil at t = 0; `material` names one
+
+  /// Index into `materials` of the material named `name`, or -1.
+  int material_index(const std::string& name) const;
+  /// max over the materials of sqrt(K / density) [m/s] (0 without materials).
+  double stiffest_sound_speed() const;
+  /// sound_speed if set (> 0), else stiffest_sound_speed().
+  double effective_sound_speed() const;
 };
 
 /// A quantity measured on one phase at every output time and at the end.
 struct Observable {
-  std::string name;   ///< column name in timeseries.csv and key in run.json
-  std::string kind;   ///< "front_position" | "max_speed" | "pressure_at" | "kinetic_energy" |
-                      ///< "max_height" | "particle_count"
+  std::string name;  ///< column name in timeseries.csv and key in run.json
+  std::string kind;  ///< "front_position" | "max_speed" | "pressure_at" | "kinetic_energy" |
+                     ///< "max_height" | "particle_count" | "mean_field" | "max_displacement"
   std::string phase = "water";
-  std::vector<double> direction;  ///< front_position / max_height: unit direction
-  std::vector<double> origin;     ///< front_position / max_height: measured from here [m]
-  std::vector<double> point;      ///< pressure_at: probe point [m]
+  std::vector<double> direction;   ///< front_position / max_height: unit direction
+  std::vector<double> origin;      ///< front_position / max_height: measured from here [m]
+  std::vector<double> point;       ///< pressure_at: probe point [m]
+  std::string field;               ///< mean_field: "porosity", "stress_yy", "velocity_y", ...
+  std::vector<double> region_min;  ///< only particles in [region_min, region_max] count [m];
+  std::vector<double> region_max;  ///< both empty: every particle of the phase
 };
 
 struct Scene {
@@ -87,12 +152,14 @@ struct Scene {
   RunSettings run;
   Domain domain;
   std::optional<WaterPhase> water;
-  std::vector<Shape> walls;   ///< fixed wall particles, shared by every phase present
+  std::optional<SoilPhase> soil;
+  std::vector<Shape> walls;  ///< fixed wall particles; each acts on the phases it lists
   std::vector<Observable> observables;
 
   double h() const { return run.h_factor * run.dp; }
   bool has_water() const { return water.has_value(); }
-  /// Names of the phases present, in a fixed order ("water", later "soil").
+  bool has_soil() const { return soil.has_value(); }
+  /// Names of the phases present, in a fixed order: "water", then "soil".
   std::vector<std::string> phases() const;
 };
 

@@ -1,20 +1,9 @@
-// Relations between scene keys the schema cannot express, and the typed Scene read from a
-// validated, default-filled table.
-#include <algorithm>
-#include <array>
+// The typed Scene read from a validated, default-filled table (the soil phase: scene_soil.cpp).
 #include <cmath>
-#include <map>
 
 #include "scene/scene_internal.h"
 
 namespace porosph::scene {
-namespace {
-
-/// Shapes may touch the domain faces up to round-off in the scene numbers.
-constexpr double kDomainTolerance = 1e-9;
-
-/// Phases, in the fixed order Scene::phases() reports them; each is a top-level table.
-constexpr std::array<const char*, 1> kPhases = {"water"};
 
 std::vector<double> vector_of(const toml::node* node) {
   std::vector<double> out;
@@ -23,118 +12,15 @@ std::vector<double> vector_of(const toml::node* node) {
   return out;
 }
 
-std::string text_of(const toml::table& table, const std::string& name) {
-  return table[name].value<std::string>().value_or("");
+std::vector<std::string> strings_of(const toml::node* node) {
+  std::vector<std::string> out;
+  if (const toml::array* array = node ? node->as_array() : nullptr)
+    for (const auto& entry : *array) out.push_back(entry.value<std::string>().value_or(""));
+  return out;
 }
 
-const char* axis_name(std::size_t axis) { return axis == 0 ? "x" : (axis == 1 ? "y" : "z"); }
-
-/// Relations inside one shape table (`key` is its concrete path, e.g. "walls[2]").
-class ShapeChecker {
- public:
-  ShapeChecker(const ErrorContext& errors, int dimension, const toml::table& domain)
-      : errors_(errors), dimension_(dimension), domain_(domain) {}
-
-  void check(const toml::table& shape, const std::string& key, bool inside_domain) const {
-    const std::string kind = text_of(shape, "shape");
-    if (kind == "polygon") {
-      if (dimension_ != 2)
-        errors_.fail(
-            shape.get("shape"), key + ".shape",
-            "polygon shapes exist only in 2D (run.dimension = " + std::to_string(dimension_) + ")");
-      polygon(shape, key, inside_domain);
-      return;
-    }
-    const toml::node* min = shape.get("min");
-    const toml::node* max = shape.get("max");
-    ordered(min, max, key + ".max", key + ".min");
-    if (inside_domain) {
-      within_domain(min, key + ".min");
-      within_domain(max, key + ".max");
-    }
-    if (kind == "container") faces(shape, key);
-  }
-
-  /// max > min in every component, else an error at max.
-  void ordered(const toml::node* min, const toml::node* max, const std::string& max_key,
-               const std::string& min_key) const {
-    const auto lo = vector_of(min);
-    const auto hi = vector_of(max);
-    for (std::size_t i = 0; i < lo.size(); ++i)
-      if (!(hi[i] > lo[i]))
-        errors_.fail(max, max_key,
-                     "must be greater than " + min_key + " in every component; " + axis_name(i) +
-                         ": " + format_number(hi[i]) + " <= " + format_number(lo[i]));
-  }
-
- private:
-  void within_domain(const toml::node* node, const std::string& key,
-                     const std::string& where = "") const {
-    const auto point = vector_of(node);
-    const auto lo = vector_of(domain_.get("min"));
-    const auto hi = vector_of(domain_.get("max"));
-    for (std::size_t i = 0; i < point.size(); ++i)
-      if (point[i] < lo[i] - kDomainTolerance || point[i] > hi[i] + kDomainTolerance)
-        errors_.fail(node, key,
-                     where + "lies outside the domain: " + axis_name(i) + " = " +
-                         format_number(point[i]) + " not in [" + format_number(lo[i]) + ", " +
-                         format_number(hi[i]) + "]");
-  }
-
-  void polygon(const toml::table& shape, const std::string& key, bool inside_domain) const {
-    const toml::array& vertices = *shape.get_as<toml::array>("vertices");
-    double twice_area = 0.0;
-    for (std::size_t i = 0; i < vertices.size(); ++i) {
-      const auto a = vector_of(vertices.get(i));
-      const auto b = vector_of(vertices.get((i + 1) % vertices.size()));
-      twice_area += a[0] * b[1] - b[0] * a[1];
-      if (inside_domain)
-        within_domain(vertices.get(i), key + ".vertices", "entry " + std::to_string(i) + ": ");
-    }
-    if (twice_area == 0.0) errors_.fail(&vertices, key + ".vertices", "polygon has zero area");
-  }
-
-  void faces(const toml::table& shape, const std::string& key) const {
-    const toml::array& faces = *shape.get_as<toml::array>("open_faces");
-    for (std::size_t i = 0; i < faces.size(); ++i) {
-      const std::string face = faces.get(i)->value<std::string>().value_or("");
-      if (face[0] == 'z' && dimension_ < 3)
-        errors_.fail(faces.get(i), key + ".open_faces",
-                     "face '" + face +
-                         "' needs a z axis (run.dimension = " + std::to_string(dimension_) + ")");
-      for (std::size_t j = 0; j < i; ++j)
-        if (faces.get(j)->value<std::string>() == face)
-          errors_.fail(faces.get(i), key + ".open_faces", "face '" + face + "' is listed twice");
-    }
-  }
-
-  const ErrorContext& errors_;
-  int dimension_;
-  const toml::table& domain_;
-};
-
-void check_observables(const toml::table& root, const ErrorContext& errors) {
-  const toml::array* observables = root.get_as<toml::array>("observables");
-  if (!observables) return;
-  std::map<std::string, std::size_t> first_index;
-  for (std::size_t i = 0; i < observables->size(); ++i) {
-    const toml::table& observable = *observables->get(i)->as_table();
-    const std::string key = "observables[" + std::to_string(i) + "]";
-    const std::string name = text_of(observable, "name");
-    if (const auto [it, inserted] = first_index.emplace(name, i); !inserted)
-      errors.fail(observable.get("name"), key + ".name",
-                  "duplicate observable name '" + name + "' (also observables[" +
-                      std::to_string(it->second) + "])");
-    const std::string phase = text_of(observable, "phase");
-    if (!root.contains(phase))
-      errors.fail(observable.get("phase"), key + ".phase",
-                  "phase '" + phase + "' is not in the scene (it has no [" + phase + "] table)");
-    if (const toml::node* direction = observable.get("direction")) {
-      const auto d = vector_of(direction);
-      if (std::all_of(d.begin(), d.end(), [](double c) { return c == 0.0; }))
-        errors.fail(direction, key + ".direction", "must not be the zero vector");
-    }
-  }
+std::string text_of(const toml::table& table, const std::string& name) {
+  return table[name].value<std::string>().value_or("");
 }
 
 Shape shape_of(const toml::table& table) {
@@ -148,11 +34,12 @@ Shape shape_of(const toml::table& table) {
   if (const toml::array* vertices = table.get_as<toml::array>("vertices"))
     for (const auto& vertex : *vertices) shape.vertices.push_back(vector_of(&vertex));
   shape.layers = static_cast<int>(table["layers"].value<int64_t>().value_or(shape.layers));
-  if (const toml::array* faces = table.get_as<toml::array>("open_faces"))
-    for (const auto& face : *faces)
-      shape.open_faces.push_back(face.value<std::string>().value_or(""));
+  shape.open_faces = strings_of(table.get("open_faces"));
   shape.label = text_of(table, "label");
   shape.remove_at = table["remove_at"].value<double>().value_or(shape.remove_at);
+  shape.phases = strings_of(table.get("phases"));
+  shape.condition = table["condition"].value<std::string>().value_or(shape.condition);
+  shape.material = text_of(table, "material");
   return shape;
 }
 
@@ -161,24 +48,6 @@ std::vector<Shape> shapes_of(const toml::array* array) {
   if (array)
     for (const auto& element : *array) shapes.push_back(shape_of(*element.as_table()));
   return shapes;
-}
-
-}  // namespace
-
-void check_scene_consistency(const toml::table& root, int dimension, const ErrorContext& errors) {
-  if (std::none_of(kPhases.begin(), kPhases.end(),
-                   [&](const char* phase) { return root.contains(phase); }))
-    errors.fail(nullptr, "water", "the scene has no phase; add a [water] table");
-  const toml::table& domain = *root.get_as<toml::table>("domain");
-  const ShapeChecker shapes(errors, dimension, domain);
-  shapes.ordered(domain.get("min"), domain.get("max"), "domain.max", "domain.min");
-  if (const toml::array* blocks = root["water"]["blocks"].as_array())
-    for (std::size_t i = 0; i < blocks->size(); ++i)
-      shapes.check(*blocks->get(i)->as_table(), "water.blocks[" + std::to_string(i) + "]", true);
-  if (const toml::array* walls = root.get_as<toml::array>("walls"))
-    for (std::size_t i = 0; i < walls->size(); ++i)
-      shapes.check(*walls->get(i)->as_table(), "walls[" + std::to_string(i) + "]", false);
-  check_observables(root, errors);
 }
 
 Scene build_scene(const toml::table& root) {
@@ -190,6 +59,7 @@ Scene build_scene(const toml::table& root) {
   RunSettings& r = scene.run;
   r.dimension = static_cast<int>(*run["dimension"].value<int64_t>());
   r.end_time = *run["end_time"].value<double>();
+  r.max_steps = static_cast<long>(*run["max_steps"].value<int64_t>());
   r.output_interval = *run["output_interval"].value<double>();
   r.dp = *run["dp"].value<double>();
   r.h_factor = *run["h_factor"].value<double>();
@@ -222,6 +92,8 @@ Scene build_scene(const toml::table& root) {
     w.blocks = shapes_of(water->get_as<toml::array>("blocks"));
     scene.water = std::move(w);
   }
+  if (const toml::table* soil = root.get_as<toml::table>("soil"))
+    scene.soil = build_soil_phase(*soil);
   scene.walls = shapes_of(root.get_as<toml::array>("walls"));
 
   if (const toml::array* observables = root.get_as<toml::array>("observables")) {
@@ -237,6 +109,9 @@ Scene build_scene(const toml::table& root) {
       for (double& c : o.direction) c /= std::sqrt(norm);
       o.origin = vector_of(table.get("origin"));
       o.point = vector_of(table.get("point"));
+      o.field = text_of(table, "field");
+      o.region_min = vector_of(table.get("region_min"));
+      o.region_max = vector_of(table.get("region_max"));
       scene.observables.push_back(std::move(o));
     }
   }
@@ -245,8 +120,9 @@ Scene build_scene(const toml::table& root) {
 
 std::vector<std::string> Scene::phases() const {
   std::vector<std::string> present;
-  for (const std::string phase : kPhases)
-    if (phase == "water" && has_water()) present.push_back(phase);
+  for (const std::string phase : kPhaseNames)
+    if ((phase == "water" && has_water()) || (phase == "soil" && has_soil()))
+      present.push_back(phase);
   return present;
 }
 

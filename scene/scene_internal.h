@@ -7,6 +7,7 @@
 
 #include <toml++/toml.h>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,6 +18,9 @@
 namespace porosph::scene {
 
 using NodePtr = std::unique_ptr<toml::node>;
+
+/// The phases a scene can have, each a top-level table, in the order Scene::phases() reports them.
+inline constexpr std::array<const char*, 2> kPhaseNames = {"water", "soil"};
 
 /// Source name given to values parsed from `--set` overrides; errors in them name this file.
 inline const std::string kOverrideSource = "--set";
@@ -45,11 +49,61 @@ std::string node_type_phrase(const toml::node& node);
 /// close. `prefix` is prepended to the suggestion (e.g. "run.").
 std::string did_you_mean(const std::string& word, const std::vector<std::string>& candidates,
                          const std::string& prefix = "");
+/// "'a', 'b' or 'c'" for {a, b, c}.
+std::string quoted_list(const std::vector<std::string>& values);
+/// "x", "y", "z" for axis 0, 1, 2.
+const char* axis_name(std::size_t axis);
 /// Concrete key path: join("walls[1]", "max") == "walls[1].max", join("", "run") == "run".
 std::string join_key(const std::string& parent, const std::string& name);
 /// The TOML value written in `text` (e.g. "0.1", "[1, 2]", "\"x\""), its source named `source`.
 /// Returns nullptr if `text` is not a TOML value.
 NodePtr parse_toml_value(const std::string& text, const std::string& source);
+
+// ---- reading a validated, default-filled table (scene_build.cpp) ----
+
+/// The numbers of an array node (empty for nullptr or a non-array).
+std::vector<double> vector_of(const toml::node* node);
+/// The strings of an array node (empty for nullptr or a non-array).
+std::vector<std::string> strings_of(const toml::node* node);
+/// The string at `name` in `table`, or "" if absent.
+std::string text_of(const toml::table& table, const std::string& name);
+/// A block or wall table as a Shape.
+Shape shape_of(const toml::table& table);
+/// Every table of an array of tables as a Shape (none for nullptr).
+std::vector<Shape> shapes_of(const toml::array* array);
+
+/// Relations inside one block or wall table (scene_consistency.cpp): min < max, inside the domain
+/// (blocks), polygons only in 2D with non-zero area, container faces.
+class ShapeChecker {
+ public:
+  ShapeChecker(const ErrorContext& errors, int dimension, const toml::table& domain)
+      : errors_(errors), dimension_(dimension), domain_(domain) {}
+
+  /// Checks the shape table `shape` (concrete key `key`, e.g. "walls[2]").
+  void check(const toml::table& shape, const std::string& key, bool inside_domain) const;
+  /// max > min in every component, else an error at max.
+  void ordered(const toml::node* min, const toml::node* max, const std::string& max_key,
+               const std::string& min_key) const;
+
+ private:
+  void within_domain(const toml::node* node, const std::string& key,
+                     const std::string& where = "") const;
+  void polygon(const toml::table& shape, const std::string& key, bool inside_domain) const;
+  void faces(const toml::table& shape, const std::string& key) const;
+
+  const ErrorContext& errors_;
+  int dimension_;
+  const toml::table& domain_;
+};
+
+// ---- the soil phase (scene_soil.cpp) ----
+
+/// Relations inside [soil]: unique material names, exactly one elastic pair per material,
+/// dilatancy <= friction, blocks inside the domain and naming a known material.
+void check_soil_consistency(const toml::table& soil, const ShapeChecker& shapes,
+                            const ErrorContext& errors);
+/// The typed soil phase from a validated, default-filled [soil] table.
+SoilPhase build_soil_phase(const toml::table& soil);
 
 // ---- pipeline steps ----
 
@@ -63,7 +117,8 @@ int validate_against_schema(toml::table& root, const SceneSchema& schema,
                             const ErrorContext& errors);
 
 /// Checks relations between keys that the schema cannot express: min < max, shapes inside the
-/// domain, polygons only in 2D, container faces, observable phases and names (scene_build.cpp).
+/// domain, polygons only in 2D, container faces, wall phases, observable phases, names, fields and
+/// regions (scene_consistency.cpp), the soil phase (scene_soil.cpp).
 void check_scene_consistency(const toml::table& root, int dimension, const ErrorContext& errors);
 
 /// Reads the typed Scene from a validated, default-filled table (scene_build.cpp).

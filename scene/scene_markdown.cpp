@@ -44,6 +44,10 @@ std::string default_text(const KeySpec& key) {
       return "`" + d.toml + "`";
     case DefaultValue::Kind::PerDimension:
       return "`" + d.toml_2d + "` (2D), `" + d.toml_3d + "` (3D)";
+    case DefaultValue::Kind::Optional:
+      return "optional";
+    case DefaultValue::Kind::Derived:
+      return d.rule;
   }
   return "";
 }
@@ -64,7 +68,9 @@ std::string allowed_text(const KeySpec& key) {
   if (key.format == StringFormat::Identifier)
     parts.push_back("identifier `[A-Za-z_][A-Za-z0-9_]*`");
   if (key.format == StringFormat::Name) parts.push_back("name `[A-Za-z_][A-Za-z0-9_-]*`");
-  if (key.min_count > 0) parts.push_back("at least " + std::to_string(key.min_count) + " entries");
+  if (key.min_count > 0)
+    parts.push_back("at least " + std::to_string(key.min_count) +
+                    (key.min_count == 1 ? " entry" : " entries"));
   std::string out;
   for (std::size_t i = 0; i < parts.size(); ++i) out += (i == 0 ? "" : "; ") + parts[i];
   return out;

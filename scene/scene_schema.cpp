@@ -1,77 +1,13 @@
 // The single declaration of every scene table and key: type, unit, default, range, description.
-// The loader validates against it and docs/scene.md is rendered from it.
+// The loader validates against it and docs/scene.md is rendered from it. This file: [scene], [run],
+// [domain], [water] and the schema's look-ups; [soil] is in scene_schema_soil.cpp, [[walls]] and
+// [[observables]] in scene_schema_shared.cpp.
 #include "scene/scene_schema.h"
 
-#include <utility>
+#include "scene/scene_schema_builder.h"
 
 namespace porosph::scene {
-namespace {
-
-/// Fluent builder so each key reads as one sentence.
-class Key {
- public:
-  Key(std::string path, ValueType type) {
-    spec_.path = std::move(path);
-    spec_.type = type;
-  }
-  Key& unit(std::string u) {
-    spec_.unit = std::move(u);
-    return *this;
-  }
-  Key& required() {
-    spec_.default_value = DefaultValue::required();
-    return *this;
-  }
-  Key& fallback(std::string toml) {
-    spec_.default_value = DefaultValue::constant(std::move(toml));
-    return *this;
-  }
-  Key& fallback_per_dimension(std::string toml_2d, std::string toml_3d) {
-    spec_.default_value = DefaultValue::per_dimension(std::move(toml_2d), std::move(toml_3d));
-    return *this;
-  }
-  Key& above(double v) {
-    spec_.min = Bound{v, false};
-    return *this;
-  }
-  Key& at_least(double v) {
-    spec_.min = Bound{v, true};
-    return *this;
-  }
-  Key& at_most(double v) {
-    spec_.max = Bound{v, true};
-    return *this;
-  }
-  Key& one_of(std::vector<std::string> values) {
-    spec_.allowed = std::move(values);
-    return *this;
-  }
-  Key& format(StringFormat f) {
-    spec_.format = f;
-    return *this;
-  }
-  Key& vector_length(int n) {
-    spec_.vector_length = n;
-    return *this;
-  }
-  Key& min_count(int n) {
-    spec_.min_count = n;
-    return *this;
-  }
-  Key& only_when(std::string key, std::vector<std::string> values) {
-    spec_.applies_when = Condition{std::move(key), std::move(values)};
-    return *this;
-  }
-  KeySpec doc(std::string description) {
-    spec_.description = std::move(description);
-    return spec_;
-  }
-
- private:
-  KeySpec spec_;
-};
-
-using T = ValueType;
+namespace schema_detail {
 
 void add_scene_and_run(SceneSchema& s) {
   s.tables.push_back({"scene", false, true, "Identification of the scene."});
@@ -95,6 +31,11 @@ void add_scene_and_run(SceneSchema& s) {
                        .required()
                        .above(0)
                        .doc("Simulated time at which the run ends."));
+  s.keys.push_back(Key("run.max_steps", T::Int)
+                       .fallback("0")
+                       .at_least(0)
+                       .doc("The run stops after this many time steps even before end_time "
+                            "(benchmarks); 0: no limit."));
   s.keys.push_back(Key("run.output_interval", T::Float)
                        .unit("s")
                        .required()
@@ -241,87 +182,9 @@ void add_water(SceneSchema& s) {
                        .doc("Optional name shown in errors and output."));
 }
 
-void add_walls_and_observables(SceneSchema& s) {
-  s.tables.push_back({"walls[]", true, false,
-                      "Fixed wall particles, shared by every phase. Walls may extend outside the "
-                      "domain."});
-  s.keys.push_back(
-      Key("walls[].shape", T::String)
-          .required()
-          .one_of({"box", "polygon", "container"})
-          .doc("box / polygon: a filled region; container: a wall of `layers` particle "
-               "layers around the inner box [min, max]."));
-  s.keys.push_back(Key("walls[].min", T::Vector)
-                       .unit("m")
-                       .required()
-                       .only_when("shape", {"box", "container"})
-                       .doc("Lower corner of the box (container: of the inner box)."));
-  s.keys.push_back(Key("walls[].max", T::Vector)
-                       .unit("m")
-                       .required()
-                       .only_when("shape", {"box", "container"})
-                       .doc("Upper corner of the box (container: of the inner box); greater than "
-                            "min in every component."));
-  s.keys.push_back(Key("walls[].vertices", T::VectorList)
-                       .unit("m")
-                       .required()
-                       .vector_length(2)
-                       .min_count(3)
-                       .only_when("shape", {"polygon"})
-                       .doc("Polygon corners [[x, y], ...] (2D only), closed implicitly."));
-  s.keys.push_back(Key("walls[].layers", T::Int)
-                       .fallback("3")
-                       .at_least(1)
-                       .only_when("shape", {"container"})
-                       .doc("Wall thickness in particle layers."));
-  s.keys.push_back(Key("walls[].open_faces", T::StringList)
-                       .fallback("[]")
-                       .one_of({"x-", "x+", "y-", "y+", "z-", "z+"})
-                       .only_when("shape", {"container"})
-                       .doc("Faces of the container left open (z faces only in 3D)."));
-  s.keys.push_back(Key("walls[].label", T::String)
-                       .fallback("\"\"")
-                       .doc("Optional name shown in errors and output."));
-  s.keys.push_back(Key("walls[].remove_at", T::Float)
-                       .unit("s")
-                       .fallback("-1.0")
-                       .doc("Time at which the wall is removed; negative: never."));
+}  // namespace schema_detail
 
-  s.tables.push_back({"observables[]", true, false,
-                      "Quantities measured on one phase at every output time and at the end "
-                      "(columns of timeseries.csv, values in run.json)."});
-  s.keys.push_back(Key("observables[].name", T::String)
-                       .required()
-                       .format(StringFormat::Identifier)
-                       .doc("Column name in timeseries.csv; unique among observables."));
-  s.keys.push_back(Key("observables[].kind", T::String)
-                       .required()
-                       .one_of({"front_position", "max_speed", "pressure_at", "kinetic_energy",
-                                "max_height", "particle_count"})
-                       .doc("What is measured over the phase's particles: front_position and "
-                            "max_height, the largest dot(x - origin, direction); max_speed, the "
-                            "largest speed; pressure_at, the pressure interpolated at point; "
-                            "kinetic_energy, the total kinetic energy; particle_count, the number "
-                            "of particles."));
-  s.keys.push_back(Key("observables[].phase", T::String)
-                       .fallback("\"water\"")
-                       .one_of({"water"})
-                       .doc("Phase measured; must be present in the scene."));
-  s.keys.push_back(Key("observables[].direction", T::Vector)
-                       .required()
-                       .only_when("kind", {"front_position", "max_height"})
-                       .doc("Direction of measurement; non-zero, normalised by the loader."));
-  s.keys.push_back(Key("observables[].origin", T::Vector)
-                       .unit("m")
-                       .fallback_per_dimension("[0.0, 0.0]", "[0.0, 0.0, 0.0]")
-                       .only_when("kind", {"front_position", "max_height"})
-                       .doc("Point the distance is measured from."));
-  s.keys.push_back(Key("observables[].point", T::Vector)
-                       .unit("m")
-                       .required()
-                       .only_when("kind", {"pressure_at"})
-                       .doc("Probe point."));
-}
+namespace {
 
 /// Part of `path` before its last '.', or "" when there is none.
 std::string parent_of(const std::string& path) {
@@ -372,9 +235,11 @@ std::vector<std::string> SceneSchema::child_names(const std::string& path) const
 }
 
 SceneSchema make_scene_schema() {
+  using namespace schema_detail;
   SceneSchema schema;
   add_scene_and_run(schema);
   add_water(schema);
+  add_soil(schema);
   add_walls_and_observables(schema);
   return schema;
 }

@@ -2,8 +2,11 @@
 //
 // The loader validates a scene against it (scene_validate.cpp) and scene_reference_markdown()
 // renders it as docs/scene.md (scene_markdown.cpp), so the reference can never drift from the code.
-// Adding a phase (e.g. [soil]) means adding its TableSpec and KeySpecs here plus its conversion to
-// the typed Scene in scene_build.cpp.
+// The declaration is split by theme: scene_schema.cpp ([scene], [run], [domain], [water]),
+// scene_schema_soil.cpp ([soil] and its materials and blocks), scene_schema_shared.cpp ([[walls]],
+// [[observables]]); scene_schema_builder.h holds the fluent builder they share. Adding a phase
+// means adding its TableSpecs and KeySpecs plus its conversion to the typed Scene (scene_build.cpp,
+// scene_soil.cpp).
 #pragma once
 
 #include <optional>
@@ -33,18 +36,26 @@ enum class StringFormat {
 
 /// A key's default. Constant and per-dimension defaults are written in TOML syntax.
 struct DefaultValue {
-  enum class Kind { Required, Constant, PerDimension };
+  /// Required: must be given. Constant / PerDimension: filled in when absent. Optional: may be
+  /// absent and then stays absent (the typed Scene holds its "not given" value). Derived: filled
+  /// in from the rest of the scene by a rule of the loader (scene_validate.cpp), `rule` says which.
+  enum class Kind { Required, Constant, PerDimension, Optional, Derived };
   Kind kind = Kind::Required;
   std::string toml;     ///< Constant
   std::string toml_2d;  ///< PerDimension, run.dimension = 2
   std::string toml_3d;  ///< PerDimension, run.dimension = 3
+  std::string rule;     ///< Derived: the rule in words, as shown in the reference
 
   static DefaultValue required() { return {}; }
   static DefaultValue constant(std::string text) {
-    return {Kind::Constant, std::move(text), {}, {}};
+    return {Kind::Constant, std::move(text), {}, {}, {}};
   }
   static DefaultValue per_dimension(std::string text_2d, std::string text_3d) {
-    return {Kind::PerDimension, {}, std::move(text_2d), std::move(text_3d)};
+    return {Kind::PerDimension, {}, std::move(text_2d), std::move(text_3d), {}};
+  }
+  static DefaultValue optional() { return {Kind::Optional, {}, {}, {}, {}}; }
+  static DefaultValue derived(std::string rule) {
+    return {Kind::Derived, {}, {}, {}, std::move(rule)};
   }
   /// The default in TOML syntax for the given dimension.
   const std::string& text(int dimension) const {

@@ -107,6 +107,15 @@ std::string did_you_mean(const std::string& word, const std::vector<std::string>
   return best ? " (did you mean '" + prefix + *best + "'?)" : std::string();
 }
 
+std::string quoted_list(const std::vector<std::string>& values) {
+  std::string out;
+  for (std::size_t i = 0; i < values.size(); ++i)
+    out += (i == 0 ? "'" : (i + 1 == values.size() ? " or '" : ", '")) + values[i] + "'";
+  return out;
+}
+
+const char* axis_name(std::size_t axis) { return axis == 0 ? "x" : (axis == 1 ? "y" : "z"); }
+
 std::string join_key(const std::string& parent, const std::string& name) {
   return parent.empty() ? name : parent + "." + name;
 }

@@ -1,8 +1,10 @@
 // Schema-driven validation: every table and key of a parsed scene is checked against the schema
 // (unknown keys, types, vector lengths, ranges, allowed values, required keys), and defaults are
-// filled in so the typed Scene and the resolved TOML can be read without further checks.
+// filled in so the typed Scene and the resolved TOML can be read without further checks. Optional
+// keys left out stay out; derived defaults follow the rules in derived_default().
 #include <algorithm>
 #include <cctype>
+#include <stdexcept>
 
 #include "scene/scene_internal.h"
 
@@ -10,13 +12,6 @@ namespace porosph::scene {
 namespace {
 
 bool is_number(const toml::node& n) { return n.is_integer() || n.is_floating_point(); }
-
-std::string quoted_list(const std::vector<std::string>& values) {
-  std::string out;
-  for (std::size_t i = 0; i < values.size(); ++i)
-    out += (i == 0 ? "'" : (i + 1 == values.size() ? " or '" : ", '")) + values[i] + "'";
-  return out;
-}
 
 bool matches_format(const std::string& text, StringFormat format) {
   if (format == StringFormat::Any) return true;
@@ -28,11 +23,34 @@ bool matches_format(const std::string& text, StringFormat format) {
   });
 }
 
+/// The phases whose table the scene has (a non-table there is reported by the validator).
+std::vector<std::string> phases_in(const toml::table& root) {
+  std::vector<std::string> present;
+  for (const char* phase : kPhaseNames)
+    if (root.get_as<toml::table>(phase)) present.emplace_back(phase);
+  return present;
+}
+
+/// The default of a Derived key, in TOML syntax, from the phases the scene has. Every Derived key
+/// of the schema needs a rule here (the scene tests load every one).
+std::string derived_default(const KeySpec& spec, const std::vector<std::string>& phases) {
+  if (spec.path == "walls[].phases") {
+    std::string list = "[";
+    for (std::size_t i = 0; i < phases.size(); ++i)
+      list += (i == 0 ? "\"" : ", \"") + phases[i] + "\"";
+    return list + "]";
+  }
+  if (spec.path == "observables[].phase")
+    return "\"" + (phases.empty() ? std::string("water") : phases.front()) + "\"";
+  throw std::logic_error("scene schema: no rule for the derived default of " + spec.path);
+}
+
 /// Walks the scene table by table. One instance per validation; holds no state beyond it.
 class Validator {
  public:
-  Validator(const SceneSchema& schema, const ErrorContext& errors, int dimension)
-      : schema_(schema), errors_(errors), dimension_(dimension) {}
+  Validator(const SceneSchema& schema, const ErrorContext& errors, int dimension,
+            std::vector<std::string> phases = {})
+      : schema_(schema), errors_(errors), dimension_(dimension), phases_(std::move(phases)) {}
 
   /// Validates `table` (schema path `schema_path`, concrete key `key`) and everything inside.
   void table(toml::table& table, const std::string& schema_path, const std::string& key) {
@@ -139,10 +157,15 @@ class Validator {
             node, join_key(key, name),
             "only allowed when " + condition->key + " is " + quoted_list(condition->values));
       if (node || !applies) continue;
-      if (spec.default_value.kind == DefaultValue::Kind::Required)
+      const DefaultValue::Kind kind = spec.default_value.kind;
+      if (kind == DefaultValue::Kind::Required)
         errors_.fail(nullptr, join_key(key, name), "required key is missing");
+      if (kind == DefaultValue::Kind::Optional) continue;
+      const std::string text = kind == DefaultValue::Kind::Derived
+                                   ? derived_default(spec, phases_)
+                                   : spec.default_value.text(dimension_);
       // Inserted as a copy, which carries no source region: errors about it name no line.
-      const NodePtr fallback = parse_toml_value(spec.default_value.text(dimension_), "(default)");
+      const NodePtr fallback = parse_toml_value(text, "(default)");
       fallback->visit([&](const auto& concrete) { table.insert_or_assign(name, concrete); });
     }
   }
@@ -178,7 +201,8 @@ class Validator {
     if (!list) expected(node, key, what);
     if (static_cast<int>(list->size()) < spec.min_count)
       errors_.fail(&node, key,
-                   "expected at least " + std::to_string(spec.min_count) + " entries, got " +
+                   "expected at least " + std::to_string(spec.min_count) +
+                       (spec.min_count == 1 ? " entry" : " entries") + ", got " +
                        std::to_string(list->size()));
     return list;
   }
@@ -245,6 +269,7 @@ class Validator {
   const SceneSchema& schema_;
   const ErrorContext& errors_;
   int dimension_;
+  std::vector<std::string> phases_;
 };
 
 }  // namespace
@@ -258,7 +283,7 @@ int validate_against_schema(toml::table& root, const SceneSchema& schema,
         .value(*node, *schema.find_key("run.dimension"), "run.dimension");
     dimension = static_cast<int>(*node->value<int64_t>());
   }
-  Validator(schema, errors, dimension).table(root, "", "");
+  Validator(schema, errors, dimension, phases_in(root)).table(root, "", "");
   return dimension;
 }
 

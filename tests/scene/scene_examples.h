@@ -132,4 +132,37 @@ inline SceneError error_of(const std::string& text,
   return SceneError("", 0, "", "");
 }
 
+/// One scene with exactly one mistake and the error it must give.
+struct ErrorCase {
+  const char* label;
+  std::string text;    ///< the scene with one mistake
+  std::string key;     ///< key named in the error
+  std::string marker;  ///< text on the reported line ("" : no line, e.g. a missing key)
+  std::string message;
+};
+
+/// Loading `c.text` as "x.toml" throws exactly "x.toml:LINE: key 'KEY': MESSAGE", LINE being the
+/// line of the marker (none for an empty marker).
+inline void expect_error(const ErrorCase& c) {
+  SCOPED_TRACE(c.label);
+  const SceneError e = error_of(c.text);
+  const int line = c.marker.empty() ? 0 : line_of(c.text, c.marker);
+  ASSERT_TRUE(c.marker.empty() || line > 0) << "marker not in the text: " << c.marker;
+  const std::string expected = "x.toml" + (line > 0 ? ":" + std::to_string(line) : "") + ": key '" +
+                               c.key + "': " + c.message;
+  EXPECT_EQ(std::string(e.what()), expected);
+  EXPECT_EQ(e.file(), "x.toml");
+  EXPECT_EQ(e.line(), line);
+  EXPECT_EQ(e.key(), c.key);
+}
+
+/// `text` without the part from the first `from` up to (not including) the next `up_to`.
+inline std::string erase(std::string text, const std::string& from, const std::string& up_to) {
+  const auto begin = text.find(from);
+  const auto end = text.find(up_to, begin);
+  EXPECT_NE(end, std::string::npos) << from << " ... " << up_to;
+  if (begin == std::string::npos || end == std::string::npos) return text;
+  return text.erase(begin, end - begin);
+}
+
 }  // namespace porosph::scene::test

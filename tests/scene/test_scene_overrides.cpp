@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/scene/scene_examples.h"
+#include "tests/scene/scene_examples_soil.h"
 
 namespace porosph::scene::test {
 namespace {
@@ -58,7 +59,11 @@ TEST(SceneOverrides, ErrorsNameTheCommandLine) {
       {"run.dpp=1", "--set: key 'run.dpp': unknown key (did you mean 'run.dp'?)"},
       {"walls[0].layer=2",
        "--set: key 'walls[0].layer': unknown key (did you mean 'walls[0].layers'?)"},
-      {"soil.rho0=2000", "--set: key 'soil': unknown key"},
+      {"sediment.d50=0.001", "--set: key 'sediment': unknown key"},
+      {"soil.rho0=2000", "--set: key 'soil.rho0': unknown key"},
+      {"soil.materials[0].density=2000",
+       "--set: key 'soil.materials[0]': no such entry: the scene has 0 [[soil.materials]] entries "
+       "(indices start at 0)"},
       {"walls[3].max=[1, 1]",
        "--set: key 'walls[3]': no such entry: the scene has 1 [[walls]] entries (indices start at "
        "0)"},
@@ -96,6 +101,52 @@ void expect_same_shape(const Shape& a, const Shape& b) {
   EXPECT_EQ(a.open_faces, b.open_faces);
   EXPECT_EQ(a.label, b.label);
   EXPECT_EQ(a.remove_at, b.remove_at);
+  EXPECT_EQ(a.phases, b.phases);
+  EXPECT_EQ(a.condition, b.condition);
+  EXPECT_EQ(a.material, b.material);
+}
+
+void expect_same_material(const SoilMaterial& m, const SoilMaterial& n) {
+  EXPECT_EQ(m.name, n.name);
+  EXPECT_EQ(m.density, n.density);
+  EXPECT_EQ(m.saturated_density, n.saturated_density);
+  EXPECT_EQ(m.porosity, n.porosity);
+  EXPECT_EQ(m.young_modulus, n.young_modulus);
+  EXPECT_EQ(m.poisson_ratio, n.poisson_ratio);
+  EXPECT_EQ(m.bulk_modulus, n.bulk_modulus);
+  EXPECT_EQ(m.shear_modulus, n.shear_modulus);
+  EXPECT_EQ(m.cohesion, n.cohesion);
+  EXPECT_EQ(m.friction_angle_deg, n.friction_angle_deg);
+  EXPECT_EQ(m.dilatancy_angle_deg, n.dilatancy_angle_deg);
+  EXPECT_EQ(m.artificial_stress, n.artificial_stress);
+  EXPECT_EQ(m.fixed, n.fixed);
+  EXPECT_EQ(m.seepage, n.seepage);
+  EXPECT_EQ(m.effective_diameter, n.effective_diameter);
+  EXPECT_EQ(m.d15, n.d15);
+  EXPECT_EQ(m.den_adel_alpha, n.den_adel_alpha);
+  EXPECT_EQ(m.den_adel_beta, n.den_adel_beta);
+  EXPECT_EQ(m.hydraulic_conductivity, n.hydraulic_conductivity);
+  EXPECT_EQ(m.variable_permeability, n.variable_permeability);
+  EXPECT_EQ(m.wet_cohesion_loss, n.wet_cohesion_loss);
+}
+
+void expect_same_soil(const SoilPhase& p, const SoilPhase& q) {
+  EXPECT_EQ(p.solver, q.solver);
+  EXPECT_EQ(p.wall_condition, q.wall_condition);
+  EXPECT_EQ(p.alpha, q.alpha);
+  EXPECT_EQ(p.beta, q.beta);
+  EXPECT_EQ(p.artificial_stress_epsilon, q.artificial_stress_epsilon);
+  EXPECT_EQ(p.artificial_stress_exponent, q.artificial_stress_exponent);
+  EXPECT_EQ(p.sound_speed, q.sound_speed);
+  EXPECT_EQ(p.initial_stress, q.initial_stress);
+  EXPECT_EQ(p.k0, q.k0);
+  EXPECT_EQ(p.damping_duration, q.damping_duration);
+  EXPECT_EQ(p.damping_coefficient, q.damping_coefficient);
+  ASSERT_EQ(p.materials.size(), q.materials.size());
+  for (std::size_t i = 0; i < p.materials.size(); ++i)
+    expect_same_material(p.materials[i], q.materials[i]);
+  ASSERT_EQ(p.blocks.size(), q.blocks.size());
+  for (std::size_t i = 0; i < p.blocks.size(); ++i) expect_same_shape(p.blocks[i], q.blocks[i]);
 }
 
 /// Every field of the typed scene but source_path is equal (doubles bit for bit).
@@ -106,6 +157,7 @@ void expect_same_scene(const Scene& a, const Scene& b) {
   const RunSettings &r = a.run, &q = b.run;
   EXPECT_EQ(r.dimension, q.dimension);
   EXPECT_EQ(r.end_time, q.end_time);
+  EXPECT_EQ(r.max_steps, q.max_steps);
   EXPECT_EQ(r.output_interval, q.output_interval);
   EXPECT_EQ(r.dp, q.dp);
   EXPECT_EQ(r.h_factor, q.h_factor);
@@ -137,6 +189,8 @@ void expect_same_scene(const Scene& a, const Scene& b) {
     ASSERT_EQ(w.blocks.size(), v.blocks.size());
     for (std::size_t i = 0; i < w.blocks.size(); ++i) expect_same_shape(w.blocks[i], v.blocks[i]);
   }
+  ASSERT_EQ(a.has_soil(), b.has_soil());
+  if (a.has_soil()) expect_same_soil(*a.soil, *b.soil);
   ASSERT_EQ(a.walls.size(), b.walls.size());
   for (std::size_t i = 0; i < a.walls.size(); ++i) expect_same_shape(a.walls[i], b.walls[i]);
   ASSERT_EQ(a.observables.size(), b.observables.size());
@@ -148,6 +202,9 @@ void expect_same_scene(const Scene& a, const Scene& b) {
     EXPECT_EQ(o.direction, p.direction);
     EXPECT_EQ(o.origin, p.origin);
     EXPECT_EQ(o.point, p.point);
+    EXPECT_EQ(o.field, p.field);
+    EXPECT_EQ(o.region_min, p.region_min);
+    EXPECT_EQ(o.region_max, p.region_max);
   }
 }
 
@@ -163,6 +220,12 @@ TEST(SceneResolvedToml, RoundTripGivesTheSameScene) {
        {"run.dp=0.1234567890123", "walls[0].max=[1.0000000000000002, 1]", "water.alpha=0",
         "observables[0].direction=[1, 3]", "water.blocks[0].label=\"a \\\"quoted\\\" label\""}},
       {kWaterBox3D, {"run.gravity=[0.1, 0, -9.80665]"}},
+      // The soil tables: defaults filled in (and the derived wall phases and observable phase),
+      // optional keys left out, the elastic pair not given recomputed identically.
+      {kGranularColumn2D, {"soil.materials[0].poisson_ratio=0.2999999999999999"}},
+      {kSubmergedBed2D,
+       {"soil.materials[0].d15=0.0123456789012345", "run.max_steps=7",
+        "observables[0].region_max=[0.30000000000000004, 0.15]"}},
   };
   for (const Input& input : inputs) {
     const Scene first = load_scene_text(input.text, "x.toml", input.overrides);

@@ -1,0 +1,233 @@
+// The schema of the soil phase: [soil] (solver settings), [[soil.materials]] (Drucker-Prager
+// skeleton and seepage law per material) and [[soil.blocks]] (regions filled with soil).
+// Relations between keys (elastic pairs, dilatancy <= friction, block materials) are checked in
+// scene_soil.cpp.
+#include "scene/scene_schema_builder.h"
+
+namespace porosph::scene::schema_detail {
+namespace {
+
+void add_soil_settings(SceneSchema& s) {
+  s.tables.push_back({"soil", false, false,
+                      "The soil phase (elastic-perfectly-plastic Drucker-Prager skeleton, eq. "
+                      "5-12). Its presence means the scene has soil."});
+  s.keys.push_back(Key("soil.solver", T::String)
+                       .fallback("\"\"")
+                       .doc("Executable of the soil solver; empty: the built-in soil_solver."));
+  s.keys.push_back(Key("soil.wall_condition", T::String)
+                       .fallback("\"no_slip\"")
+                       .one_of({"no_slip", "free_slip"})
+                       .doc("Velocity condition at wall particles."));
+  s.keys.push_back(Key("soil.alpha", T::Float)
+                       .fallback("0.1")
+                       .at_least(0)
+                       .doc("Monaghan artificial viscosity alpha; 0 switches it off."));
+  s.keys.push_back(Key("soil.beta", T::Float)
+                       .fallback("0.1")
+                       .at_least(0)
+                       .doc("Monaghan artificial viscosity beta."));
+  s.keys.push_back(Key("soil.artificial_stress_epsilon", T::Float)
+                       .fallback("0.5")
+                       .at_least(0)
+                       .doc("Gray-Monaghan artificial stress coefficient epsilon (materials with "
+                            "artificial_stress = true)."));
+  s.keys.push_back(Key("soil.artificial_stress_exponent", T::Float)
+                       .fallback("2.55")
+                       .above(0)
+                       .doc("Exponent n of the artificial stress, f = (W(r) / W(dp))^n."));
+  s.keys.push_back(Key("soil.sound_speed", T::Float)
+                       .unit("m/s")
+                       .fallback("0.0")
+                       .at_least(0)
+                       .doc("Numerical sound speed (time-step limit, artificial viscosity); 0: "
+                            "from the stiffest material, max sqrt(K / density)."));
+  s.keys.push_back(
+      Key("soil.initial_stress", T::String)
+          .fallback("\"none\"")
+          .one_of({"geostatic", "none"})
+          .doc("geostatic: at-rest stress from the weight of the soil above, "
+               "horizontal = k0 vertical; none: zero stress (use damping to settle)."));
+  s.keys.push_back(Key("soil.k0", T::String)
+                       .fallback("\"jaky\"")
+                       .one_of({"jaky", "elastic"})
+                       .doc("Earth pressure coefficient at rest for geostatic initial stress: "
+                            "jaky, K0 = 1 - sin(phi); elastic, K0 = nu / (1 - nu)."));
+  s.keys.push_back(Key("soil.damping_duration", T::Float)
+                       .unit("s")
+                       .fallback("0.0")
+                       .at_least(0)
+                       .doc("Length of the initial damping (dynamic relaxation) stage; 0: none."));
+  s.keys.push_back(Key("soil.damping_coefficient", T::Float)
+                       .fallback("0.02")
+                       .at_least(0)
+                       .doc("Damping during that stage: D = coefficient sqrt(E / (density h^2)) "
+                            "[1/s]."));
+}
+
+void add_soil_materials(SceneSchema& s) {
+  s.tables.push_back({"soil.materials[]", true, true,
+                      "Soil materials (needed when [soil] exists), referred to by name from "
+                      "[[soil.blocks]]. Elasticity is given as young_modulus and poisson_ratio "
+                      "or as bulk_modulus and shear_modulus: exactly one pair."});
+  const std::string m = "soil.materials[].";
+  s.keys.push_back(Key(m + "name", T::String)
+                       .required()
+                       .format(StringFormat::Identifier)
+                       .doc("Material name, unique among the materials."));
+  s.keys.push_back(Key(m + "density", T::Float)
+                       .unit("kg/m^3")
+                       .required()
+                       .above(0)
+                       .doc("Bulk density of the soil, used for its weight when dry."));
+  s.keys.push_back(Key(m + "saturated_density", T::Float)
+                       .unit("kg/m^3")
+                       .optional()
+                       .above(0)
+                       .doc("Bulk density with the pores full of water (weight of submerged "
+                            "soil, eq. 16); absent: not given (0 in the typed scene)."));
+  s.keys.push_back(Key(m + "porosity", T::Float)
+                       .fallback("0.4")
+                       .above(0)
+                       .below(1)
+                       .doc("Initial porosity n0 (eq. 18-20)."));
+  s.keys.push_back(Key(m + "young_modulus", T::Float)
+                       .unit("Pa")
+                       .optional()
+                       .above(0)
+                       .doc("Young's modulus E; with poisson_ratio."));
+  s.keys.push_back(Key(m + "poisson_ratio", T::Float)
+                       .optional()
+                       .above(-1)
+                       .below(0.5)
+                       .doc("Poisson's ratio nu; with young_modulus."));
+  s.keys.push_back(Key(m + "bulk_modulus", T::Float)
+                       .unit("Pa")
+                       .optional()
+                       .above(0)
+                       .doc("Bulk modulus K; with shear_modulus."));
+  s.keys.push_back(Key(m + "shear_modulus", T::Float)
+                       .unit("Pa")
+                       .optional()
+                       .above(0)
+                       .doc("Shear modulus G; with bulk_modulus."));
+  s.keys.push_back(Key(m + "cohesion", T::Float)
+                       .unit("Pa")
+                       .fallback("0.0")
+                       .at_least(0)
+                       .doc("Cohesion c of the Drucker-Prager yield function (eq. 9-10)."));
+  s.keys.push_back(Key(m + "friction_angle", T::Float)
+                       .unit("deg")
+                       .required()
+                       .at_least(0)
+                       .at_most(89)
+                       .doc("Internal friction angle phi."));
+  s.keys.push_back(Key(m + "dilatancy_angle", T::Float)
+                       .unit("deg")
+                       .fallback("0.0")
+                       .at_least(0)
+                       .at_most(89)
+                       .doc("Dilatancy angle psi of the plastic potential; at most "
+                            "friction_angle."));
+  s.keys.push_back(Key(m + "artificial_stress", T::Bool)
+                       .fallback("false")
+                       .doc("Gray-Monaghan artificial stress against tensile instability."));
+  s.keys.push_back(Key(m + "fixed", T::Bool)
+                       .fallback("false")
+                       .doc("A rigid porous bed: its particles never move (water still seeps "
+                            "through)."));
+  s.keys.push_back(Key(m + "wet_cohesion_loss", T::Bool)
+                       .fallback("false")
+                       .doc("Cohesion vanishes once the particle is wet, its stress scaled back "
+                            "onto the new yield surface (rockfill)."));
+}
+
+void add_seepage(SceneSchema& s) {
+  const std::string m = "soil.materials[].";
+  s.keys.push_back(
+      Key(m + "seepage", T::String)
+          .fallback("\"none\"")
+          .one_of({"none", "darcy_kozeny_carman", "darcy_conductivity", "forchheimer_den_adel"})
+          .doc("Seepage law of the water-soil interaction (eq. 13): none; Darcy with k from "
+               "Kozeny-Carman (eq. 14); Darcy with a given hydraulic conductivity; Forchheimer "
+               "with Den Adel coefficients (eq. 15)."));
+  s.keys.push_back(Key(m + "effective_diameter", T::Float)
+                       .unit("m")
+                       .required()
+                       .above(0)
+                       .only_when("seepage", {"darcy_kozeny_carman"})
+                       .doc("Effective grain diameter d_e of Kozeny-Carman (eq. 14)."));
+  s.keys.push_back(Key(m + "hydraulic_conductivity", T::Float)
+                       .unit("m/s")
+                       .required()
+                       .above(0)
+                       .only_when("seepage", {"darcy_conductivity"})
+                       .doc("Darcy hydraulic conductivity at porosity n0."));
+  s.keys.push_back(Key(m + "d15", T::Float)
+                       .unit("m")
+                       .required()
+                       .above(0)
+                       .only_when("seepage", {"forchheimer_den_adel"})
+                       .doc("Grain diameter d15 (15 % finer by weight) of Den Adel (eq. 15)."));
+  s.keys.push_back(Key(m + "den_adel_alpha", T::Float)
+                       .fallback("150.0")
+                       .above(0)
+                       .only_when("seepage", {"forchheimer_den_adel"})
+                       .doc("Den Adel coefficient alpha of the linear term (eq. 15)."));
+  s.keys.push_back(Key(m + "den_adel_beta", T::Float)
+                       .fallback("0.4")
+                       .above(0)
+                       .only_when("seepage", {"forchheimer_den_adel"})
+                       .doc("Den Adel coefficient beta of the quadratic term (eq. 15)."));
+  s.keys.push_back(
+      Key(m + "variable_permeability", T::Bool)
+          .fallback("true")
+          .only_when("seepage",
+                     {"darcy_kozeny_carman", "darcy_conductivity", "forchheimer_den_adel"})
+          .doc("The seepage coefficients follow the current porosity of each particle (eq. 20); "
+               "false: they keep their value at n0."));
+}
+
+void add_soil_blocks(SceneSchema& s) {
+  s.tables.push_back({"soil.blocks[]", true, true,
+                      "Regions filled with soil at t = 0 (needed when [soil] exists), each of "
+                      "one material. Particles sit on a lattice of spacing dp, half a spacing "
+                      "inside the region. Every block must lie inside the domain."});
+  s.keys.push_back(Key("soil.blocks[].shape", T::String)
+                       .required()
+                       .one_of({"box", "polygon"})
+                       .doc("Kind of region."));
+  s.keys.push_back(Key("soil.blocks[].min", T::Vector)
+                       .unit("m")
+                       .required()
+                       .only_when("shape", {"box"})
+                       .doc("Lower corner of the box."));
+  s.keys.push_back(Key("soil.blocks[].max", T::Vector)
+                       .unit("m")
+                       .required()
+                       .only_when("shape", {"box"})
+                       .doc("Upper corner of the box; greater than min in every component."));
+  s.keys.push_back(Key("soil.blocks[].vertices", T::VectorList)
+                       .unit("m")
+                       .required()
+                       .vector_length(2)
+                       .min_count(3)
+                       .only_when("shape", {"polygon"})
+                       .doc("Polygon corners [[x, y], ...] (2D only), closed implicitly."));
+  s.keys.push_back(Key("soil.blocks[].material", T::String)
+                       .required()
+                       .doc("Name of the block's material (a [[soil.materials]] entry)."));
+  s.keys.push_back(Key("soil.blocks[].label", T::String)
+                       .fallback("\"\"")
+                       .doc("Optional name shown in errors and output."));
+}
+
+}  // namespace
+
+void add_soil(SceneSchema& s) {
+  add_soil_settings(s);
+  add_soil_materials(s);
+  add_seepage(s);
+  add_soil_blocks(s);
+}
+
+}  // namespace porosph::scene::schema_detail
