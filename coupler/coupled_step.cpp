@@ -57,8 +57,10 @@ void CoupledStepLoop::collect_states() {
   auto last_heard = Clock::now();
   Incoming in;
   while (received.size() < phases_.size()) {
-    check_alive_();
+    // Receive first: a solver that reported an error and exited has its message queued, and
+    // that message (not "exited with code N") is the reason the user needs.
     if (!hub_.receive(in, std::min(0.2, timeout))) {
+      check_alive_();
       if (seconds_since(last_heard) > timeout) {
         std::string silent;
         for (const auto& phase : phases_) {

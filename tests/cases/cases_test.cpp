@@ -90,5 +90,35 @@ TEST(Cases, HydrostaticTankShortened) {
   expect_water_run_directory(run, 4);
 }
 
+// The full 2 s of the hydrostatic tank at dp = 0.02 m (30 x 20 particles, ~6,000 steps).
+// Measured at this coarse spacing (OpenMP order makes runs differ): row-mean pressure 0.9-2.3%
+// off rho g (H - z), per-particle error 2.4-3.9% (third row from the surface, inside the
+// kernel support of the free surface), max speed ~1.1% of sqrt(g H). The 2% / 1% targets are
+// met at dp = 0.01 for the profile, not per particle (docs/validation.md). The bounds below keep
+// ~2x margin over those measurements and fail on any real regression of walls, initial density, EOS.
+TEST(Cases, HydrostaticTankStaysHydrostaticForTwoSeconds) {
+  const auto run = run_case("hydrostatic_tank", {"run.dp=0.02", "run.output_interval=0.5"});
+  ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
+  const auto check = validation::check_hydrostatic(run.out);
+  EXPECT_NEAR(check.time, 2.0, 1e-9);
+  EXPECT_NEAR(check.depth, 0.6, 0.01);  // the column compresses by ~gH/(2c^2) only
+  EXPECT_LE(check.max_row_rel_error, 0.04);
+  EXPECT_LE(check.max_rel_error, 0.08);
+  EXPECT_LE(check.max_speed_ratio, 0.03);
+}
+
+// The whole dam break at a/20 (20 x 40 particles): the surge front against Martin & Moyce (1952).
+// The experiment lags every simulation at early times (the column's release took time; SPH fronts
+// run ahead, e.g. Jonsson et al. 2015), so the bound is the 0.10 plus half of that lag's
+// measured share: mean |dZ| <= 0.15, max <= 0.30. Measured at a/20: mean 0.09.
+TEST(Cases, DamBreakFrontFollowsMartinMoyce) {
+  const auto run = run_case("dam_break", {"run.dp=0.0028575"});
+  ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
+  const auto c = validation::compare_dam_break(run.out, source("cases/dam_break/reference.csv"));
+  EXPECT_EQ(c.T.size(), 15u);
+  EXPECT_LE(c.mean_abs_error, 0.15);
+  EXPECT_LE(c.max_abs_error, 0.30);
+}
+
 }  // namespace
 }  // namespace porosph::testing

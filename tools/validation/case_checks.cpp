@@ -55,6 +55,22 @@ DamBreakComparison compare_dam_break(const std::string& run_dir, const std::stri
   }
   if (out.T.empty()) throw std::runtime_error(run_dir + ": the run covers no reference time");
   out.mean_abs_error = sum / static_cast<double>(out.T.size());
+  out.mean_abs_error_shifted = out.mean_abs_error;
+  for (int k = 1; k <= 60; ++k) {
+    const double shift = 0.01 * k;
+    double shifted_sum = 0;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < out.T.size(); ++i) {
+      const double Z_sim = interpolate(t, z, (out.T[i] - shift) / time_scale);
+      if (std::isnan(Z_sim)) continue;
+      shifted_sum += std::abs(Z_sim - out.Z_reference[i]);
+      ++count;
+    }
+    if (count == out.T.size() && shifted_sum / count < out.mean_abs_error_shifted) {
+      out.mean_abs_error_shifted = shifted_sum / count;
+      out.best_shift = shift;
+    }
+  }
   return out;
 }
 
@@ -93,6 +109,7 @@ HydrostaticCheck check_hydrostatic(const std::string& run_dir) {
   out.depth = surface - (bottom - 0.5 * dp);
 
   std::map<long, std::pair<double, double>> rows;  // row -> (sum of p, count)
+  std::map<long, double> row_max_error;
   double sum_error = 0;
   for (std::size_t i = 0; i < position.rows; ++i) {
     if (fixed.values[i]) continue;
@@ -106,6 +123,7 @@ HydrostaticCheck check_hydrostatic(const std::string& run_dir) {
     out.max_rel_error = std::max(out.max_rel_error, error);
     sum_error += error;
     ++out.particles;
+    row_max_error[row] = std::max(row_max_error[row], error);
     rows[row].first += pressure.values[i];
     rows[row].second += 1.0;
   }
@@ -113,8 +131,9 @@ HydrostaticCheck check_hydrostatic(const std::string& run_dir) {
   out.mean_rel_error = sum_error / static_cast<double>(out.particles);
   for (const auto& [row, sum_count] : rows) {
     const double exact = rho0 * g * (surface - (top - row * dp));
-    out.max_row_rel_error =
-        std::max(out.max_row_rel_error, std::abs(sum_count.first / sum_count.second - exact) / exact);
+    const double mean = sum_count.first / sum_count.second;
+    out.max_row_rel_error = std::max(out.max_row_rel_error, std::abs(mean - exact) / exact);
+    out.rows.push_back({surface - (top - row * dp), exact, mean, row_max_error[row]});
   }
   return out;
 }

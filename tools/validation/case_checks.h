@@ -11,6 +11,10 @@ struct DamBreakComparison {
   double a = 0;  ///< column width [m], from the run's resolved scene (first water block)
   std::vector<double> T, Z_reference, Z_simulated;  ///< reference points inside the simulated time
   double mean_abs_error = 0, max_abs_error = 0;
+  /// Diagnostic only: the time shift dT (in T units, 0..0.6) that minimises the mean |dZ| of
+  /// Z_sim(T - dT) against the table, and that minimum. It measures how much of the error is a
+  /// constant delay of the experiment's release rather than a wrong front speed.
+  double best_shift = 0, mean_abs_error_shifted = 0;
 };
 
 /// The simulated front is the leading particle centre plus half a spacing (the particle's extent),
@@ -27,6 +31,12 @@ struct HydrostaticCheck {
   double max_row_rel_error = 0; ///< per lattice row: |mean p - p_exact(row)| / p_exact(row)
   double max_speed_ratio = 0;   ///< max |v| / sqrt(|g| H) at the last snapshot
   double time = 0;              ///< time of the snapshot
+  /// Per lattice row below the surface (row 0 = top): depth of the row centre, exact pressure,
+  /// mean simulated pressure, and the largest per-particle relative error in the row.
+  struct Row {
+    double depth, exact, mean, max_rel_error;
+  };
+  std::vector<Row> rows;
 };
 
 HydrostaticCheck check_hydrostatic(const std::string& run_dir);
