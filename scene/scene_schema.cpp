@@ -156,27 +156,7 @@ void add_water(SceneSchema& s) {
                       "Regions filled with water at t = 0 (needed when [water] exists). "
                       "Particles sit on a lattice of spacing dp, half a spacing inside the region. "
                       "Every block must lie inside the domain."});
-  s.keys.push_back(Key("water.blocks[].shape", T::String)
-                       .required()
-                       .one_of({"box", "polygon"})
-                       .doc("Kind of region."));
-  s.keys.push_back(Key("water.blocks[].min", T::Vector)
-                       .unit("m")
-                       .required()
-                       .only_when("shape", {"box"})
-                       .doc("Lower corner of the box."));
-  s.keys.push_back(Key("water.blocks[].max", T::Vector)
-                       .unit("m")
-                       .required()
-                       .only_when("shape", {"box"})
-                       .doc("Upper corner of the box; greater than min in every component."));
-  s.keys.push_back(Key("water.blocks[].vertices", T::VectorList)
-                       .unit("m")
-                       .required()
-                       .vector_length(2)
-                       .min_count(3)
-                       .only_when("shape", {"polygon"})
-                       .doc("Polygon corners [[x, y], ...] (2D only), closed implicitly."));
+  add_filled_region_keys(s, "water.blocks[]");
   s.keys.push_back(Key("water.blocks[].label", T::String)
                        .fallback("\"\"")
                        .doc("Optional name shown in errors and output."));

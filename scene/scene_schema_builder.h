@@ -96,6 +96,9 @@ void add_scene_and_run(SceneSchema& s);
 void add_water(SceneSchema& s);
 /// [soil], [[soil.materials]], [[soil.blocks]] (scene_schema_soil.cpp).
 void add_soil(SceneSchema& s);
+/// The region keys every filled block has: shape (box | polygon), min, max, vertices, for the
+/// array table `table` (e.g. "water.blocks[]") (scene_schema_shared.cpp).
+void add_filled_region_keys(SceneSchema& s, const std::string& table);
 /// [[walls]], [[observables]] (scene_schema_shared.cpp).
 void add_walls_and_observables(SceneSchema& s);
 

@@ -132,4 +132,28 @@ void add_walls_and_observables(SceneSchema& s) {
   add_observables(s);
 }
 
+void add_filled_region_keys(SceneSchema& s, const std::string& table) {
+  s.keys.push_back(Key(table + ".shape", T::String)
+                       .required()
+                       .one_of({"box", "polygon"})
+                       .doc("Kind of region."));
+  s.keys.push_back(Key(table + ".min", T::Vector)
+                       .unit("m")
+                       .required()
+                       .only_when("shape", {"box"})
+                       .doc("Lower corner of the box."));
+  s.keys.push_back(Key(table + ".max", T::Vector)
+                       .unit("m")
+                       .required()
+                       .only_when("shape", {"box"})
+                       .doc("Upper corner of the box; greater than min in every component."));
+  s.keys.push_back(Key(table + ".vertices", T::VectorList)
+                       .unit("m")
+                       .required()
+                       .vector_length(2)
+                       .min_count(3)
+                       .only_when("shape", {"polygon"})
+                       .doc("Polygon corners [[x, y], ...] (2D only), closed implicitly."));
+}
+
 }  // namespace porosph::scene::schema_detail

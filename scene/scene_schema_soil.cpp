@@ -192,27 +192,7 @@ void add_soil_blocks(SceneSchema& s) {
                       "Regions filled with soil at t = 0 (needed when [soil] exists), each of "
                       "one material. Particles sit on a lattice of spacing dp, half a spacing "
                       "inside the region. Every block must lie inside the domain."});
-  s.keys.push_back(Key("soil.blocks[].shape", T::String)
-                       .required()
-                       .one_of({"box", "polygon"})
-                       .doc("Kind of region."));
-  s.keys.push_back(Key("soil.blocks[].min", T::Vector)
-                       .unit("m")
-                       .required()
-                       .only_when("shape", {"box"})
-                       .doc("Lower corner of the box."));
-  s.keys.push_back(Key("soil.blocks[].max", T::Vector)
-                       .unit("m")
-                       .required()
-                       .only_when("shape", {"box"})
-                       .doc("Upper corner of the box; greater than min in every component."));
-  s.keys.push_back(Key("soil.blocks[].vertices", T::VectorList)
-                       .unit("m")
-                       .required()
-                       .vector_length(2)
-                       .min_count(3)
-                       .only_when("shape", {"polygon"})
-                       .doc("Polygon corners [[x, y], ...] (2D only), closed implicitly."));
+  add_filled_region_keys(s, "soil.blocks[]");
   s.keys.push_back(Key("soil.blocks[].material", T::String)
                        .required()
                        .doc("Name of the block's material (a [[soil.materials]] entry)."));

@@ -117,21 +117,30 @@ TEST(CouplerRunFaults, ProtocolVersionMismatchIsRefused) {
   expect_failed(run_with_dummy("version", "--protocol-version 99"), "protocol version mismatch");
 }
 
+/// Starts a run whose dummy solver hangs at step 2 (with a long timeout), in the background.
+pid_t start_hanging_run(const std::string& dir, const std::string& scene) {
+  return start_process({bin("coupler"), "run", scene, "--out", dir + "/out", "--fluid-solver",
+                        bin("dummy_solver") + " --phase water --hang-at-step 2", "--no-progress",
+                        "--set", "run.solver_timeout=30"},
+                       dir + "/log.txt");
+}
+
+/// The solver's pid from run.json, which is written at the first output (t = 0); 0 after 5 s.
+pid_t wait_for_solver_pid(const std::string& dir) {
+  for (int i = 0; i < 250; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    if (std::filesystem::exists(dir + "/out/run.json")) {
+      return solver_pid(read_json(dir + "/out/run.json"));
+    }
+  }
+  return 0;
+}
+
 TEST(CouplerRunFaults, KilledSolverStopsTheRun) {
   const std::string dir = fresh_dir("killed-solver");
   const std::string scene = write_text(dir + "/scene.toml", kScene);
-  const pid_t coupler =
-      start_process({bin("coupler"), "run", scene, "--out", dir + "/out", "--fluid-solver",
-                     bin("dummy_solver") + " --phase water --hang-at-step 2", "--no-progress",
-                     "--set", "run.solver_timeout=30"},
-                    dir + "/log.txt");
-  // run.json is written at the first output (t = 0), with the solver's pid in it.
-  pid_t solver = 0;
-  for (int i = 0; i < 250 && solver == 0; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    if (std::filesystem::exists(dir + "/out/run.json"))
-      solver = solver_pid(read_json(dir + "/out/run.json"));
-  }
+  const pid_t coupler = start_hanging_run(dir, scene);
+  const pid_t solver = wait_for_solver_pid(dir);
   ASSERT_GT(solver, 0);
   kill(solver, SIGKILL);
   EXPECT_EQ(wait_process(coupler, 10.0), 1) << read_text(dir + "/log.txt");
@@ -143,17 +152,8 @@ TEST(CouplerRunFaults, KilledSolverStopsTheRun) {
 TEST(CouplerRunFaults, KilledCouplerTakesItsSolversWithIt) {
   const std::string dir = fresh_dir("killed-coupler");
   const std::string scene = write_text(dir + "/scene.toml", kScene);
-  const pid_t coupler =
-      start_process({bin("coupler"), "run", scene, "--out", dir + "/out", "--fluid-solver",
-                     bin("dummy_solver") + " --phase water --hang-at-step 2", "--no-progress",
-                     "--set", "run.solver_timeout=30"},
-                    dir + "/log.txt");
-  pid_t solver = 0;
-  for (int i = 0; i < 250 && solver == 0; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    if (std::filesystem::exists(dir + "/out/run.json"))
-      solver = solver_pid(read_json(dir + "/out/run.json"));
-  }
+  const pid_t coupler = start_hanging_run(dir, scene);
+  const pid_t solver = wait_for_solver_pid(dir);
   ASSERT_GT(solver, 0);
   kill(coupler, SIGKILL);
   wait_process(coupler, 5.0);
