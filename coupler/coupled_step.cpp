@@ -52,11 +52,13 @@ std::vector<std::string> CoupledStepLoop::timeseries_columns() const {
 }
 
 void CoupledStepLoop::collect_states() {
-  std::map<std::string, bool> received;
+  // received_ keeps its nodes between steps: resetting the flags allocates nothing.
+  for (auto& [phase, flag] : received_) flag = false;
+  std::size_t received_count = 0;
   const double timeout = scene_.run.solver_timeout;
   auto last_heard = Clock::now();
   Incoming in;
-  while (received.size() < phases_.size()) {
+  while (received_count < phases_.size()) {
     // Receive first: a solver that reported an error and exited has its message queued, and
     // that message (not "exited with code N") is the reason the user needs.
     if (!hub_.receive(in, std::min(0.2, timeout))) {
@@ -64,7 +66,7 @@ void CoupledStepLoop::collect_states() {
       if (seconds_since(last_heard) > timeout) {
         std::string silent;
         for (const auto& phase : phases_) {
-          if (!received.count(phase)) silent += (silent.empty() ? "" : ", ") + phase;
+          if (!received_[phase]) silent += (silent.empty() ? "" : ", ") + phase;
         }
         std::ostringstream msg;
         msg << "the " << silent << " solver did not answer within " << timeout
@@ -78,7 +80,8 @@ void CoupledStepLoop::collect_states() {
     switch (in.kind) {
       case Incoming::Kind::State:
         absorb_state(in.phase, in.state);
-        received[in.phase] = true;
+        if (!received_[in.phase]) ++received_count;
+        received_[in.phase] = true;
         break;
       case Incoming::Kind::Error: {
         std::ostringstream msg;

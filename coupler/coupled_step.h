@@ -46,6 +46,7 @@ class CoupledStepLoop {
   std::unique_ptr<io::TimeSeriesCsv> timeseries_;
   std::map<std::string, coupling::StepState> states_;
   std::map<std::string, coupling::StepCommand> commands_;
+  std::map<std::string, bool> received_;  ///< which phases reported this step
   std::vector<double> row_;
 };
 
