@@ -1,8 +1,9 @@
 // porosph_bench: throughput of the solvers through the real coupler (a benchmark, never a test).
-// Runs the dam break at about 30,000 water particles for a fixed number of steps (dt pinned by dt0
-// below every stability limit) and prints particle-steps per second, the share of the solver's wall
-// time spent in the coupler round trip, and the peak memory of the largest process.
-//   porosph_bench [--particles 30000] [--steps 400] [--threads N] [--keep DIR]
+// Runs a case at about 30,000 particles for a fixed number of steps (dt pinned by dt0 below every
+// stability limit) and prints particle-steps per second, the share of the solver's wall time spent
+// in the coupler round trip, and the peak memory of the largest process. Cases: dam_break (water
+// solver) and granular_collapse (soil solver).
+//   porosph_bench [--case dam_break] [--particles 30000] [--steps 400] [--threads N] [--keep DIR]
 #include <sys/resource.h>
 #include <sys/wait.h>
 
@@ -30,21 +31,34 @@ std::string executable_dir() {
 
 int main(int argc, char** argv) {
   CLI::App app{"PoroSPH throughput benchmark (dam break through the coupler)"};
+  std::string case_name = "dam_break";
   int particles = 30000;
   int steps = 400;
   int threads = 0;
   std::string keep;
-  app.add_option("--particles", particles, "approximate number of water particles");
+  app.add_option("--case", case_name, "dam_break (water) or granular_collapse (soil)")
+      ->check(CLI::IsMember({"dam_break", "granular_collapse"}));
+  app.add_option("--particles", particles, "approximate number of free particles");
   app.add_option("--steps", steps, "number of coupled steps");
   app.add_option("--threads", threads, "OpenMP threads (default: all cores)");
   app.add_option("--keep", keep, "run directory to keep (default: a temporary one)");
   CLI11_PARSE(app, argc, argv);
 
-  // Martin & Moyce column a x 2a: n = 2 (a/dp)^2 water particles.
-  const double a = 0.05715;
-  const double dp = a / std::round(std::sqrt(particles / 2.0));
-  // CFL limit with c = 20 m/s and |v| up to ~3 m/s early in the collapse: 0.2*1.3dp/23.
-  const double dt = 0.2 * 1.3 * dp / 23.0;
+  const bool soil = case_name == "granular_collapse";
+  const std::string phase = soil ? "soil" : "water";
+  double dp = 0.0, dt = 0.0;
+  if (soil) {
+    // Bui et al. column 0.2 m x 0.1 m: n = 0.5 (0.2 / dp)^2. CFL with the P-wave speed 20.7 m/s
+    // and |v| up to ~1.5 m/s: 0.2 * 1.2 dp / 22.
+    dp = 0.2 / std::round(std::sqrt(2.0 * particles));
+    dt = 0.2 * 1.2 * dp / 22.0;
+  } else {
+    // Martin & Moyce column a x 2a: n = 2 (a/dp)^2 water particles. CFL limit with c = 20 m/s and
+    // |v| up to ~3 m/s early in the collapse: 0.2*1.3dp/23.
+    const double a = 0.05715;
+    dp = a / std::round(std::sqrt(particles / 2.0));
+    dt = 0.2 * 1.3 * dp / 23.0;
+  }
   const std::string out =
       keep.empty() ? (std::filesystem::temp_directory_path() / "porosph-bench").string() : keep;
   char settings[512];
@@ -52,41 +66,46 @@ int main(int argc, char** argv) {
                 " --set run.dp=%.9g --set run.dt0=%.9g --set run.end_time=%.9g"
                 " --set run.output_interval=1.0 --no-progress",
                 dp, dt, dt * steps * (1 + 1e-9));
-  const std::string command = (threads > 0 ? "OMP_NUM_THREADS=" + std::to_string(threads) + " " : "") +
-                              executable_dir() + "/coupler run " + POROSPH_SOURCE_DIR +
-                              "/cases/dam_break/scene.toml --out " + out + settings;
+  const std::string command =
+      (threads > 0 ? "OMP_NUM_THREADS=" + std::to_string(threads) + " " : "") + executable_dir() +
+      "/coupler run " + POROSPH_SOURCE_DIR + "/cases/" + case_name + "/scene.toml --out " + out +
+      settings;
   std::printf("# %s\n", command.c_str());
   const auto start = std::chrono::steady_clock::now();
   const int status = std::system(command.c_str());
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (status != 0) {
     std::fprintf(stderr, "porosph_bench: the run failed (status %d)\n", status);
     return 1;
   }
   std::ifstream file(out + "/run.json");
   const auto run = nlohmann::json::parse(file);
-  const auto& water = run.at("phases").at("water");
-  const double total = water.at("particles").at("total").get<double>();
-  const double free_particles = water.at("particles").at("free").get<double>();
+  const auto& record = run.at("phases").at(phase);
+  const double total = record.at("particles").at("total").get<double>();
+  const double free_particles = record.at("particles").at("free").get<double>();
   const double run_steps = run.at("steps").get<double>();
-  const auto& seconds = water.at("wall_seconds");
+  const auto& seconds = record.at("wall_seconds");
   const double solver_wall = seconds.at("total").get<double>();
   const double communication = seconds.at("communication").get<double>();
   rusage usage{};
   getrusage(RUSAGE_CHILDREN, &usage);
 
   std::printf("%-44s %12s\n", "figure", "value");
-  std::printf("%-44s %12.0f\n", "water particles (free)", free_particles);
+  std::printf("%-44s %12s\n", "case", case_name.c_str());
+  std::printf("%-44s %12.0f\n", (phase + " particles (free)").c_str(), free_particles);
   std::printf("%-44s %12.0f\n", "all particles (incl. walls)", total);
   std::printf("%-44s %12.0f\n", "coupled steps", run_steps);
-  std::printf("%-44s %12.2f\n", "water solver wall time [s]", solver_wall);
+  std::printf("%-44s %12.2f\n", (phase + " solver wall time [s]").c_str(), solver_wall);
   std::printf("%-44s %12.3e\n", "particle-steps/s (free particles)",
               free_particles * run_steps / solver_wall);
-  std::printf("%-44s %12.3e\n", "particle-steps/s (all particles)", total * run_steps / solver_wall);
+  std::printf("%-44s %12.3e\n", "particle-steps/s (all particles)",
+              total * run_steps / solver_wall);
   std::printf("%-44s %11.1f%%\n", "coupler round trip share of solver time",
               100.0 * communication / solver_wall);
   std::printf("%-44s %12.2f\n", "whole run wall time [s]", wall);
-  std::printf("%-44s %12.1f\n", "peak memory of the largest process [MiB]", usage.ru_maxrss / 1024.0);
+  std::printf("%-44s %12.1f\n", "peak memory of the largest process [MiB]",
+              usage.ru_maxrss / 1024.0);
   if (keep.empty()) std::filesystem::remove_all(out);
   return 0;
 }

@@ -7,6 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "coupler/interaction/overlap_region.h"
+
 namespace porosph::coupler {
 
 namespace {
@@ -31,8 +33,12 @@ CoupledStepLoop::CoupledStepLoop(const scene::Scene& scene, SolverHub& hub, RunR
       write_outputs_(std::move(write_outputs)),
       phases_(scene.phases()),
       controller_(scene.run.dt0, scene.run.dt_smoothing) {
-  timeseries_ = std::make_unique<io::TimeSeriesCsv>(out_dir + "/timeseries.csv",
-                                                    timeseries_columns());
+  if (scene.has_water() && scene.has_soil()) {
+    interaction_ = std::make_unique<SoilWaterInteraction>(scene);
+    record_.interaction.active = true;
+  }
+  timeseries_ =
+      std::make_unique<io::TimeSeriesCsv>(out_dir + "/timeseries.csv", timeseries_columns());
 }
 
 std::vector<std::string> CoupledStepLoop::timeseries_columns() const {
@@ -46,6 +52,15 @@ std::vector<std::string> CoupledStepLoop::timeseries_columns() const {
     columns.push_back(phase + "_particles");
     columns.push_back(phase + "_removed");
     columns.push_back(phase + "_overlap");
+  }
+  if (scene_.has_water() && scene_.has_soil()) {
+    // Cumulative interaction impulses [N s] up to t, and the soil-water pairs at t.
+    for (const char* phase : {"soil", "water"}) {
+      for (int k = 0; k < scene_.run.dimension; ++k) {
+        columns.push_back(std::string("impulse_to_") + phase + "_" + axis_name(k));
+      }
+    }
+    columns.push_back("soil_water_pairs");
   }
   for (const auto& observable : scene_.observables) columns.push_back(observable.name);
   return columns;
@@ -104,8 +119,9 @@ void CoupledStepLoop::absorb_state(const std::string& phase, const coupling::Ste
   const double tolerance = 1e-9 * std::max(1.0, std::abs(record_.time));
   if (std::abs(state.time - record_.time) > tolerance) {
     std::ostringstream msg;
-    msg << "the " << phase << " solver is at t = " << state.time << " s, the coupler at t = "
-        << record_.time << " s: the solver did not advance by the shared dt";
+    msg << "the " << phase << " solver is at t = " << state.time
+        << " s, the coupler at t = " << record_.time
+        << " s: the solver did not advance by the shared dt";
     throw std::runtime_error(msg.str());
   }
   const auto& d = state.diagnostics;
@@ -143,6 +159,11 @@ void CoupledStepLoop::append_timeseries_row(double dt) {
     row_.push_back(static_cast<double>(d.removed_count));
     row_.push_back(static_cast<double>(state.overlap_id.size()));
   }
+  if (interaction_) {
+    for (double impulse : record_.ledger.impulse_to_soil) row_.push_back(impulse);
+    for (double impulse : record_.ledger.impulse_to_water) row_.push_back(impulse);
+    row_.push_back(static_cast<double>(interaction_summary_.pair_count));
+  }
   for (const auto& observable : scene_.observables) {
     row_.push_back(record_.observables[observable.name]);
   }
@@ -159,14 +180,38 @@ void CoupledStepLoop::send_commands(double dt, bool write_output, std::uint32_t 
     command.write_output = write_output;
     command.output_index = output_index;
     command.stop = stop;
-    // Interaction accelerations, saturation and the overlap zone come with the soil-water
-    // interaction; a scene with a single phase exchanges none (DESIGN.md section 1).
+    // A scene with a single phase exchanges no interaction (DESIGN.md section 1). The vectors
+    // are assigned in place: their storage is reused from step to step.
     command.interaction_acceleration.clear();
     command.saturation.clear();
     command.other_region_min.clear();
     command.other_region_max.clear();
+    if (interaction_) {
+      const bool soil = phase == "soil";
+      const std::vector<double>& acceleration =
+          soil ? interaction_->soil_acceleration() : interaction_->water_acceleration();
+      command.interaction_acceleration.assign(acceleration.begin(), acceleration.end());
+      if (soil) {
+        command.saturation.assign(interaction_->saturation().begin(),
+                                  interaction_->saturation().end());
+      }
+      overlap_region_for(states_.at(soil ? "water" : "soil"), scene_, command.other_region_min,
+                         command.other_region_max);
+    }
     hub_.send_command(phase, command);
   }
+}
+
+double CoupledStepLoop::compute_interaction() {
+  if (!interaction_) return std::numeric_limits<double>::infinity();
+  const auto start = Clock::now();
+  const coupling::StepState& water = states_.at("water");
+  const coupling::StepState& soil = states_.at("soil");
+  interaction_summary_ = interaction_->compute(water, soil, record_.time);
+  record_.interaction.add_step(interaction_summary_.evaluated, interaction_summary_.pair_count,
+                               water.overlap_id.size(), soil.overlap_id.size(),
+                               interaction_summary_.dt_limit, seconds_since(start));
+  return interaction_summary_.dt_limit;
 }
 
 void CoupledStepLoop::wait_for_goodbyes() {
@@ -182,8 +227,8 @@ void CoupledStepLoop::wait_for_goodbyes() {
       continue;
     }
     if (in.kind == Incoming::Kind::Error) {
-      throw std::runtime_error("the " + in.phase + " solver failed while finishing: " +
-                               in.error_message);
+      throw std::runtime_error("the " + in.phase +
+                               " solver failed while finishing: " + in.error_message);
     }
     if (in.kind != Incoming::Kind::Goodbye) continue;
     PhaseRecord& phase_record = record_.phases[in.phase];
@@ -208,12 +253,18 @@ void CoupledStepLoop::run(ProgressLine& progress) {
       write_outputs_();  // the solvers wrote their snapshot before sending this state
       outputs_pending = false;
     }
-    const bool stop = record_.time >= end_time - end_tolerance;
+    const bool step_limit_reached =
+        scene_.run.max_steps > 0 &&
+        record_.steps >= static_cast<std::uint64_t>(scene_.run.max_steps);
+    const bool stop = record_.time >= end_time - end_tolerance || step_limit_reached;
     bool write = record_.time >= next_output_time - 1e-9 * interval;
     if (stop && last_output_time != record_.time) write = true;  // always a final snapshot
+    // Eq. 21 with the interaction of this step; the solvers' own dt_force already includes the
+    // interaction of the previous step.
+    const double dt_interaction = compute_interaction();
     double dt = 0.0;
     if (!stop) {
-      double dt_min = std::numeric_limits<double>::infinity();
+      double dt_min = dt_interaction;
       for (const auto& [phase, state] : states_) dt_min = std::min(dt_min, state.dt_limit);
       dt = std::min(controller_.next(dt_min), end_time - record_.time);
     }
@@ -222,8 +273,12 @@ void CoupledStepLoop::run(ProgressLine& progress) {
         record_.phases[phase].snapshots.push_back(
             {output_index, record_.time, states_.at(phase).diagnostics.particle_count});
       }
-      append_timeseries_row(dt);
+      append_timeseries_row(dt);  // cumulative impulses up to t: before this step's
       last_output_time = record_.time;
+    }
+    if (interaction_ && interaction_summary_.forces) {
+      const InteractionOutputs& o = interaction_->outputs();
+      record_.ledger.add_step(dt, o.force_on_water, o.force_on_soil, o.force_magnitude_sum);
     }
     send_commands(dt, write, output_index, stop);
     if (write) {

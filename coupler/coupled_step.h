@@ -1,6 +1,8 @@
 // The lock-step loop of a coupled run (DESIGN.md section 1, one round trip per step):
-// collect every solver's state -> interaction (when both phases exist) -> the one shared dt
-// (TimeStepController) -> output / stop flags -> send every solver its command.
+// collect every solver's state -> soil-water interaction (when both phases exist; its eq. 21
+// limit joins the solvers' dt limits) -> the one shared dt (TimeStepController) -> output / stop
+// flags -> conservation ledger -> send every solver its command (dt, interaction accelerations,
+// saturation, and the overlap zone it must report next step).
 #pragma once
 
 #include <functional>
@@ -8,6 +10,7 @@
 #include <memory>
 #include <string>
 
+#include "coupler/interaction/soil_water_interaction.h"
 #include "coupler/progress_line.h"
 #include "coupler/run_record.h"
 #include "coupler/solver_hub.h"
@@ -30,6 +33,9 @@ class CoupledStepLoop {
 
  private:
   void collect_states();
+  /// Evaluates the interaction for the collected states (scenes with both phases) and books its
+  /// statistics; returns its dt limit (infinity without interaction).
+  double compute_interaction();
   void absorb_state(const std::string& phase, const coupling::StepState& state);
   void append_timeseries_row(double dt);
   void send_commands(double dt, bool write_output, std::uint32_t output_index, bool stop);
@@ -44,6 +50,8 @@ class CoupledStepLoop {
   std::vector<std::string> phases_;
   TimeStepController controller_;
   std::unique_ptr<io::TimeSeriesCsv> timeseries_;
+  std::unique_ptr<SoilWaterInteraction> interaction_;  ///< null unless both phases exist
+  InteractionSummary interaction_summary_;
   std::map<std::string, coupling::StepState> states_;
   std::map<std::string, coupling::StepCommand> commands_;
   std::map<std::string, bool> received_;  ///< which phases reported this step

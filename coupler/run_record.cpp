@@ -1,12 +1,14 @@
 #include "coupler/run_record.h"
 
+#include <toml++/toml.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
-#include <toml++/toml.h>
 
 namespace porosph::coupler {
 
@@ -66,19 +68,59 @@ json phase_json(const PhaseRecord& p) {
   out["initial"] = diagnostics_json(p.initial);
   out["final"] = diagnostics_json(p.last);
   out["snapshots"] = p.snapshots.size();
-  out["wall_seconds"] = {{"total", number(p.timing.wall_seconds)},
-                         {"physics", number(p.finished ? p.timing.physics_seconds
-                                                       : p.physics_seconds)},
-                         {"communication", number(p.timing.communication_seconds)}};
+  out["wall_seconds"] = {
+      {"total", number(p.timing.wall_seconds)},
+      {"physics", number(p.finished ? p.timing.physics_seconds : p.physics_seconds)},
+      {"communication", number(p.timing.communication_seconds)}};
   out["finished"] = p.finished;
   return out;
 }
 
+json interaction_json(const InteractionRecord& r) {
+  const double mean = r.evaluations ? r.pairs_sum / static_cast<double>(r.evaluations) : 0.0;
+  return {{"evaluations", r.evaluations},
+          {"pairs",
+           {{"min", r.pairs_min},
+            {"mean", number(mean)},
+            {"max", r.pairs_max},
+            {"last", r.pairs_last}}},
+          {"overlap_max", {{"water", r.water_overlap_max}, {"soil", r.soil_overlap_max}}},
+          {"dt_limit_min", number(r.dt_limit_min)},  // null: the interaction never limited dt
+          {"seconds", number(r.seconds)}};
+}
+
 }  // namespace
+
+void ConservationLedger::add_step(double dt, const std::vector<double>& force_on_water,
+                                  const std::vector<double>& force_on_soil,
+                                  double force_magnitude_sum) {
+  for (std::size_t k = 0; k < impulse_to_water.size() && k < force_on_water.size(); ++k) {
+    impulse_to_water[k] += dt * force_on_water[k];
+  }
+  for (std::size_t k = 0; k < impulse_to_soil.size() && k < force_on_soil.size(); ++k) {
+    impulse_to_soil[k] += dt * force_on_soil[k];
+  }
+  impulse_magnitude_sum += dt * force_magnitude_sum;
+}
+
+void InteractionRecord::add_step(bool evaluated, std::uint64_t pairs, std::uint64_t water_overlap,
+                                 std::uint64_t soil_overlap, double dt_limit, double step_seconds) {
+  seconds += step_seconds;
+  water_overlap_max = std::max(water_overlap_max, water_overlap);
+  soil_overlap_max = std::max(soil_overlap_max, soil_overlap);
+  dt_limit_min = std::min(dt_limit_min, dt_limit);
+  pairs_last = pairs;
+  if (!evaluated) return;
+  pairs_min = evaluations == 0 ? pairs : std::min(pairs_min, pairs);
+  pairs_max = std::max(pairs_max, pairs);
+  pairs_sum += static_cast<double>(pairs);
+  ++evaluations;
+}
 
 double ConservationLedger::relative_imbalance() const {
   std::vector<double> total(impulse_to_water.size());
-  for (std::size_t k = 0; k < total.size(); ++k) total[k] = impulse_to_water[k] + impulse_to_soil[k];
+  for (std::size_t k = 0; k < total.size(); ++k)
+    total[k] = impulse_to_water[k] + impulse_to_soil[k];
   return impulse_magnitude_sum > 0 ? norm(total) / impulse_magnitude_sum : 0.0;
 }
 
@@ -110,7 +152,9 @@ void write_run_json(const std::string& path, const RunRecord& r) {
   out["phases"] = phases;
   out["ledger"] = {{"impulse_to_water", vector_json(r.ledger.impulse_to_water)},
                    {"impulse_to_soil", vector_json(r.ledger.impulse_to_soil)},
+                   {"impulse_magnitude_sum", number(r.ledger.impulse_magnitude_sum)},
                    {"relative_imbalance", number(r.ledger.relative_imbalance())}};
+  if (r.interaction.active) out["interaction"] = interaction_json(r.interaction);
   json observables = json::object();
   for (const auto& [name, value] : r.observables) observables[name] = number(value);
   out["observables"] = observables;
@@ -131,6 +175,14 @@ std::vector<io::XdmfField> snapshot_fields_of_phase(const std::string& phase, in
   const std::size_t d = static_cast<std::size_t>(dimension);
   std::vector<io::XdmfField> fields = {{"velocity", d, "Float"}, {"density", 1, "Float"}};
   if (phase == "water") fields.push_back({"pressure", 1, "Float"});
+  if (phase == "soil") {  // soil_solver/soil_output.h
+    fields.push_back({"stress", 9, "Float"});
+    fields.push_back({"porosity", 1, "Float"});
+    fields.push_back({"plastic_strain", 1, "Float"});
+    fields.push_back({"displacement", d, "Float"});
+    fields.push_back({"saturation", 1, "Float"});
+    fields.push_back({"material", 1, "Int"});
+  }
   fields.push_back({"id", 1, "Int"});
   fields.push_back({"fixed", 1, "UChar"});
   return fields;

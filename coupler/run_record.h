@@ -16,13 +16,34 @@ namespace porosph::coupler {
 /// antisymmetric, so the two totals cancel to round-off; relative_imbalance() is what tests assert.
 struct ConservationLedger {
   std::vector<double> impulse_to_water;  ///< sum over steps of dt * sum_a m_a a_a^interaction
-  std::vector<double> impulse_to_soil;
-  double impulse_magnitude_sum = 0;  ///< sum of |impulse| per step, the scale for the imbalance
+  std::vector<double> impulse_to_soil;   ///< sum over steps of dt * sum_i m_i^s a_i^interaction
+  /// sum over steps of dt * (sum_i |m_i^s a_i| + sum_a |m_a a_a|): the scale of the round-off
+  /// against which the imbalance is measured.
+  double impulse_magnitude_sum = 0;
 
   explicit ConservationLedger(int dimension = 2)
       : impulse_to_water(dimension, 0.0), impulse_to_soil(dimension, 0.0) {}
-  /// |sum of both impulses| / (sum over steps of the impulse magnitudes); 0 when nothing was exchanged.
+  /// Books one step of length dt with the interaction forces sum_a m_a a_a (`force_on_water`),
+  /// sum_i m_i^s a_i (`force_on_soil`) and the sum of the per-particle force magnitudes.
+  void add_step(double dt, const std::vector<double>& force_on_water,
+                const std::vector<double>& force_on_soil, double force_magnitude_sum);
+  /// |sum of both impulses| / impulse_magnitude_sum; 0 when nothing was exchanged.
   double relative_imbalance() const;
+};
+
+/// The coupler's soil-water interaction over the run (scenes with both phases).
+struct InteractionRecord {
+  bool active = false;            ///< the scene has both phases (run.json then has "interaction")
+  std::uint64_t evaluations = 0;  ///< steps on which both overlap sets were non-empty
+  std::uint64_t pairs_min = 0, pairs_max = 0, pairs_last = 0;
+  double pairs_sum = 0;  ///< over the evaluations (mean = pairs_sum / evaluations)
+  std::uint64_t water_overlap_max = 0, soil_overlap_max = 0;  ///< largest overlap sets
+  double seconds = 0;  ///< coupler wall time in the interaction (part of coupler_seconds)
+  double dt_limit_min = std::numeric_limits<double>::infinity();  ///< smallest eq. 21 limit [s]
+
+  /// Books one step: `evaluated` false when an overlap set was empty (pairs = 0).
+  void add_step(bool evaluated, std::uint64_t pairs, std::uint64_t water_overlap,
+                std::uint64_t soil_overlap, double dt_limit, double seconds);
 };
 
 struct PhaseRecord {
@@ -35,7 +56,7 @@ struct PhaseRecord {
   coupling::Diagnostics last;
   std::vector<io::XdmfSnapshot> snapshots;
   coupling::Timing timing;
-  bool finished = false;  ///< said Goodbye
+  bool finished = false;       ///< said Goodbye
   double physics_seconds = 0;  ///< summed from the per-step reports
 };
 
@@ -56,6 +77,7 @@ struct RunRecord {
   double dt_sum = 0;
   std::map<std::string, PhaseRecord> phases;
   ConservationLedger ledger;
+  InteractionRecord interaction;
   std::map<std::string, double> observables;  ///< latest value of every observable
 
   void record_dt(double dt);

@@ -23,14 +23,16 @@ struct FluidParams {
   ArtificialViscosity artificial;  ///< Monaghan 1992 (alpha = beta = 0: off)
   double eta2 = 0.0;               ///< 0.01 h^2, regularisation of 1/r terms
   sph::Vec<D> gravity = sph::Vec<D>::Zero();
-  bool no_slip = true;           ///< walls: mirrored velocity in viscous terms; false: excluded
-  int density_filter_every = 0;  ///< Shepard filter period in steps (0: off)
-  int euler_every = 40;          ///< modified Verlet: Euler step period
+  bool no_slip = true;             ///< walls: mirrored velocity in viscous terms; false: excluded
+  int density_filter_every = 0;    ///< Shepard filter period in steps (0: off)
+  double density_diffusion = 0.0;  ///< delta of the density diffusion term (0: off)
+  int euler_every = 40;            ///< modified Verlet: Euler step period
   double cfl = 0.2, c_a = 0.25, viscous_coefficient = 0.125;
   bool hydrostatic_initial = true;
 
   bool morris_on() const { return mu > 0.0; }
   bool artificial_on() const { return artificial.alpha > 0.0 || artificial.beta > 0.0; }
+  bool diffusion_on() const { return density_diffusion > 0.0; }
 
   /// Throws std::invalid_argument if the scene has no water or an unknown wall condition.
   static FluidParams from_scene(const scene::Scene& s) {
@@ -55,6 +57,7 @@ struct FluidParams {
     }
     p.no_slip = w.wall_condition == "no_slip";
     p.density_filter_every = w.density_filter_every;
+    p.density_diffusion = w.density_diffusion;
     p.euler_every = s.run.euler_every;
     p.cfl = s.run.cfl;
     p.c_a = s.run.c_a;

@@ -24,6 +24,9 @@ struct FluidParticles {
   std::vector<double> remove_at;  ///< walls: removal time [s] (< 0: never); water: -1
   std::vector<std::int64_t> id;
   std::vector<std::uint8_t> fixed;  ///< 1 for wall particles (snapshot field "fixed")
+  /// Index of the inflow zone (scene water.inflows) whose prescribed velocity a water particle
+  /// follows (flow_zones.h); -1 for free water and for walls. Array resizes fill 0: set it.
+  std::vector<std::int32_t> zone;
 
   std::size_t size() const { return position.size(); }
   std::size_t wall_count() const { return size() - n_free; }
@@ -31,9 +34,32 @@ struct FluidParticles {
   /// Calls fn(array) on every per-particle array (to resize, permute or compact them together).
   template <class Fn>
   void for_each_array(Fn&& fn) {
-    fn(position), fn(velocity), fn(velocity_previous), fn(acceleration), fn(interaction);
-    fn(wall_velocity), fn(density), fn(density_previous), fn(density_rate), fn(pressure);
-    fn(sound_speed), fn(mass), fn(remove_at), fn(id), fn(fixed);
+    apply_to_arrays(fn, *this);
+  }
+  /// Calls fn(array, other's same array) on every per-particle array.
+  template <class Fn>
+  void for_each_array_with(const FluidParticles& other, Fn&& fn) {
+    apply_to_arrays(fn, *this, other);
+  }
+
+  /// Appends a copy of particle i of `source` (every array) at the end; n_free is unchanged.
+  void append_copy(const FluidParticles& source, std::size_t i) {
+    for_each_array_with(source, [i](auto& array, const auto& from) { array.push_back(from[i]); });
+  }
+
+  /// Inserts every particle of `born` as water particles at [n_free, n_free + born.size()) (the
+  /// walls move up, in order); n_free grows. Allocates only when an array's capacity is exceeded.
+  void insert_free(const FluidParticles& born) {
+    const std::ptrdiff_t at = static_cast<std::ptrdiff_t>(n_free);
+    for_each_array_with(born, [at](auto& array, const auto& from) {
+      array.insert(array.begin() + at, from.begin(), from.end());
+    });
+    n_free += born.size();
+  }
+
+  /// Reserves room for `capacity` particles in every array.
+  void reserve(std::size_t capacity) {
+    for_each_array([capacity](auto& array) { array.reserve(capacity); });
   }
 
   /// Keeps the particles with keep[i] != 0, in order; n_free follows. Returns the number removed.
@@ -53,24 +79,25 @@ struct FluidParticles {
   }
 
   /// Re-orders every array: new[i] = old[order[i]]; `order` must keep water before walls.
+  /// Capacities are kept (the scratch buffers take the arrays' capacity).
   void permute(const std::vector<std::int32_t>& order) {
-    permute_array(position, order, scratch_vec_), permute_array(velocity, order, scratch_vec_);
-    permute_array(velocity_previous, order, scratch_vec_);
-    permute_array(acceleration, order, scratch_vec_);
-    permute_array(interaction, order, scratch_vec_);
-    permute_array(wall_velocity, order, scratch_vec_);
-    permute_array(density, order, scratch_f64_),
-        permute_array(density_previous, order, scratch_f64_);
-    permute_array(density_rate, order, scratch_f64_), permute_array(pressure, order, scratch_f64_);
-    permute_array(sound_speed, order, scratch_f64_), permute_array(mass, order, scratch_f64_);
-    permute_array(remove_at, order, scratch_f64_), permute_array(id, order, scratch_i64_);
-    permute_array(fixed, order, scratch_u8_);
+    for_each_array([&](auto& array) { permute_array(array, order, scratch_for(array)); });
   }
 
  private:
+  /// The one list of the per-particle arrays: fn(p.array...) for each array of every p.
+  template <class Fn, class... Particles>
+  static void apply_to_arrays(Fn& fn, Particles&... p) {
+    fn(p.position...), fn(p.velocity...), fn(p.velocity_previous...), fn(p.acceleration...);
+    fn(p.interaction...), fn(p.wall_velocity...), fn(p.density...), fn(p.density_previous...);
+    fn(p.density_rate...), fn(p.pressure...), fn(p.sound_speed...), fn(p.mass...);
+    fn(p.remove_at...), fn(p.id...), fn(p.fixed...), fn(p.zone...);
+  }
+
   template <class T>
   static void permute_array(std::vector<T>& array, const std::vector<std::int32_t>& order,
                             std::vector<T>& scratch) {
+    scratch.reserve(array.capacity());
     scratch.resize(order.size());
     const std::int64_t n = static_cast<std::int64_t>(order.size());
 #pragma omp parallel for schedule(static)
@@ -78,9 +105,16 @@ struct FluidParticles {
     array.swap(scratch);
   }
 
+  std::vector<Vec>& scratch_for(const std::vector<Vec>&) { return scratch_vec_; }
+  std::vector<double>& scratch_for(const std::vector<double>&) { return scratch_f64_; }
+  std::vector<std::int64_t>& scratch_for(const std::vector<std::int64_t>&) { return scratch_i64_; }
+  std::vector<std::int32_t>& scratch_for(const std::vector<std::int32_t>&) { return scratch_i32_; }
+  std::vector<std::uint8_t>& scratch_for(const std::vector<std::uint8_t>&) { return scratch_u8_; }
+
   std::vector<Vec> scratch_vec_;
   std::vector<double> scratch_f64_;
   std::vector<std::int64_t> scratch_i64_;
+  std::vector<std::int32_t> scratch_i32_;
   std::vector<std::uint8_t> scratch_u8_;
 };
 

@@ -6,6 +6,7 @@
 
 #include "fluid_solver/artificial_viscosity.h"
 #include "fluid_solver/continuity.h"
+#include "fluid_solver/density_diffusion.h"
 #include "fluid_solver/pressure_force.h"
 #include "fluid_solver/viscosity_morris.h"
 #include "sph/kernels.h"
@@ -13,7 +14,7 @@
 namespace porosph::fluid {
 namespace {
 
-template <int D, class Kernel, bool kMorris, bool kArtificial, bool kNoSlip>
+template <int D, class Kernel, bool kMorris, bool kArtificial, bool kNoSlip, bool kDiffusion>
 RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
                        const FluidParams<D>& prm, FluidParticles<D>& P) {
   using Vec = sph::Vec<D>;
@@ -27,6 +28,7 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
   const double mu = prm.mu, eta2 = prm.eta2;
   const ArtificialViscosity av = prm.artificial;
   const Vec g = prm.gravity;
+  const DensityDiffusion<D> diffusion(prm.density_diffusion, prm.h, prm.eos, g, eta2);
   double max_v2 = 0.0, max_a2 = 0.0;
 #pragma omp parallel for schedule(dynamic, 256) reduction(max : max_v2, max_a2)
   for (std::int64_t a = 0; a < n; ++a) {
@@ -34,12 +36,16 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
     const double rho_a = rho[a], p_a = p[a], c_a = c[a];
     Vec acc = Vec::Zero();
     double divergence = 0.0;
+    double diffusion_sum = 0.0;  // D_a / (delta h c0), water neighbours only (density_diffusion.h)
     // Water neighbours.
     for (auto it = nl.begin(a); it != nl.mid(a); ++it) {
       const std::int32_t b = it->b;
       const Vec grad_w = kernel.grad_factor(it->r) * it->x_ab;
       const Vec v_ab = v_a - vel[b];
       divergence += continuity_term<D>(m[b], rho[b], v_ab, grad_w);
+      if constexpr (kDiffusion) {
+        diffusion_sum += diffusion.pair_term(rho_a, rho[b], m[b], it->x_ab, it->r, grad_w);
+      }
       acc += pressure_acceleration<D>(m[b], p_a, p[b], rho_a, rho[b], grad_w);
       if constexpr (kMorris) {
         acc += morris_viscous_acceleration<D>(m[b], mu, mu, rho_a, rho[b], it->x_ab, it->r, grad_w,
@@ -68,18 +74,31 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
     }
     acc += g;
     P.acceleration[a] = acc;
-    P.density_rate[a] = rho_a * divergence;
+    if constexpr (kDiffusion) {
+      P.density_rate[a] = rho_a * divergence + diffusion.coefficient() * diffusion_sum;
+    } else {
+      P.density_rate[a] = rho_a * divergence;
+    }
     max_v2 = std::max(max_v2, v_a.squaredNorm());
-    max_a2 = std::max(max_a2, (acc + P.interaction[a]).squaredNorm());
+    if (P.zone[a] < 0)  // inflow-zone particles move as prescribed: no eq. 21 limit from them
+      max_a2 = std::max(max_a2, (acc + P.interaction[a]).squaredNorm());
   }
   return RateSummary{std::sqrt(max_v2), std::sqrt(max_a2)};
+}
+
+template <int D, class Kernel, bool kMorris, bool kArtificial, bool kNoSlip>
+RateSummary dispatch_diffusion(const sph::NeighbourList<D>& nl, const Kernel& k,
+                               const FluidParams<D>& prm, FluidParticles<D>& P) {
+  if (prm.diffusion_on())
+    return rates_loop<D, Kernel, kMorris, kArtificial, kNoSlip, true>(nl, k, prm, P);
+  return rates_loop<D, Kernel, kMorris, kArtificial, kNoSlip, false>(nl, k, prm, P);
 }
 
 template <int D, class Kernel, bool kMorris, bool kArtificial>
 RateSummary dispatch_wall(const sph::NeighbourList<D>& nl, const Kernel& k,
                           const FluidParams<D>& prm, FluidParticles<D>& P) {
-  if (prm.no_slip) return rates_loop<D, Kernel, kMorris, kArtificial, true>(nl, k, prm, P);
-  return rates_loop<D, Kernel, kMorris, kArtificial, false>(nl, k, prm, P);
+  if (prm.no_slip) return dispatch_diffusion<D, Kernel, kMorris, kArtificial, true>(nl, k, prm, P);
+  return dispatch_diffusion<D, Kernel, kMorris, kArtificial, false>(nl, k, prm, P);
 }
 
 template <int D, class Kernel, bool kMorris>

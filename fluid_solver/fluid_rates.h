@@ -4,6 +4,7 @@
 //   eq. 3   symmetric pressure gradient       pressure_force.h
 //   eq. 3   Morris 1997 laminar viscosity     viscosity_morris.h      (mu > 0)
 //           Monaghan 1992 artificial visc.    artificial_viscosity.h  (alpha or beta > 0)
+//   eq. 2+  delta-SPH density diffusion       density_diffusion.h     (delta > 0; water pairs only)
 // plus gravity: dv_a/dt = g + sum_b (...). Wall neighbours enter with their Adami-interpolated
 // pressure and density; in the viscous terms with the mirrored velocity (no-slip) or not at all
 // (free-slip). Terms that are off are compiled out of the pair loop (template flags).
@@ -16,8 +17,9 @@
 namespace porosph::fluid {
 
 struct RateSummary {
-  double max_speed = 0.0;               ///< max |v_a| over water particles
-  double max_total_acceleration = 0.0;  ///< max |dv_a/dt + interaction_a| (for eq. 21)
+  double max_speed = 0.0;  ///< max |v_a| over water particles
+  /// max |dv_a/dt + interaction_a| over the water particles outside inflow zones (for eq. 21)
+  double max_total_acceleration = 0.0;
 };
 
 /// Pressure and sound speed of the water particles from their density (eq. 4).

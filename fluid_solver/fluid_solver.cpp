@@ -4,14 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 
 #include "fluid_solver/density_filter.h"
 #include "fluid_solver/fluid_rates.h"
-#include "fluid_solver/hydrostatic_initial.h"
+#include "fluid_solver/initial_particles.h"
 #include "fluid_solver/wall_boundary.h"
-#include "sph/geometry.h"
 #include "sph/integrator.h"
 
 namespace porosph::fluid {
@@ -39,8 +37,9 @@ FluidSolver<D>::FluidSolver(const scene::Scene& s)
     : params_(FluidParams<D>::from_scene(s)),
       box_(sph::DomainBox<D>::from_scene(s, 2.0 * params_.h)),
       cubic_(params_.h),
-      wendland_(params_.h) {
-  using Vec = sph::Vec<D>;
+      wendland_(params_.h),
+      damping_(DampingStage::from_scene(s)),
+      zones_(*s.water, params_.dp, damping_.duration()) {
   if (s.run.kernel == "cubic_spline") {
     kernel_kind_ = KernelKind::CubicSpline;
   } else if (s.run.kernel == "wendland_c2") {
@@ -51,53 +50,10 @@ FluidSolver<D>::FluidSolver(const scene::Scene& s)
   for (const auto& o : s.observables)
     if (o.phase == "water") observables_.push_back(sph::prepare_observable<D>(o));
 
-  const double dp = params_.dp;
-  std::vector<Vec> water, walls;
-  std::vector<double> wall_remove_at;
-  for (const auto& block : s.water->blocks) {
-    for (const Vec& x : sph::fill_block_outside_walls<D>(block, s.walls, dp)) {
-      Vec wrapped = x;
-      box_.wrap(wrapped);
-      if (!box_.outside(x) && wrapped == x) water.push_back(x);
-    }
-  }
-  for (const auto& wall : s.walls) {
-    for (const Vec& x : sph::fill_shape<D>(wall, dp)) {
-      Vec wrapped = x;  // along periodic axes the domain itself closes the flow: no wall beyond it
-      box_.wrap(wrapped);
-      if (wrapped != x) continue;
-      walls.push_back(x);
-      wall_remove_at.push_back(wall.remove_at);
-      if (wall.remove_at >= 0.0 &&
-          (next_wall_removal_ < 0.0 || wall.remove_at < next_wall_removal_))
-        next_wall_removal_ = wall.remove_at;
-    }
-  }
-  FluidParticles<D>& P = particles_;
-  const std::size_t n = water.size() + walls.size();
-  P.n_free = water.size();
-  P.for_each_array([n](auto& array) { array.resize(n); });
-  for (std::size_t i = 0; i < n; ++i) {
-    const bool wall = i >= P.n_free;
-    P.position[i] = wall ? walls[i - P.n_free] : water[i];
-    P.velocity[i] = P.velocity_previous[i] = P.acceleration[i] = Vec::Zero();
-    P.interaction[i] = P.wall_velocity[i] = Vec::Zero();
-    P.density[i] = params_.eos.rho0();
-    P.pressure[i] = P.density_rate[i] = 0.0;
-    P.sound_speed[i] = params_.eos.c0();
-    P.remove_at[i] = wall ? wall_remove_at[i - P.n_free] : -1.0;
-    P.id[i] = static_cast<std::int64_t>(i);
-    P.fixed[i] = wall ? 1 : 0;
-  }
-  if (params_.hydrostatic_initial) {
-    hydrostatic_state<D>(P.position.data(), P.n_free, params_.gravity, dp, params_.eos,
-                         P.pressure.data(), P.density.data());
-  }
-  // m = rho(t=0) dp^D: the particle volume m/rho equals the lattice volume dp^D, so the initial
-  // hydrostatic state is an SPH equilibrium (with m = rho0 dp^D the volumes of the compressed deep
-  // particles are too small and a still tank slowly settles to pressures ~2 % too high at depth).
-  for (std::size_t i = 0; i < n; ++i) P.mass[i] = P.density[i] * params_.volume;
-  P.density_previous = P.density;
+  InitialParticles<D> initial = initial_particles<D>(s, params_, box_, zones_);
+  particles_ = std::move(initial.particles);
+  next_wall_removal_ = initial.next_wall_removal;
+  next_id_ = static_cast<std::int64_t>(particles_.size());
   reorder_by_cell();
 }
 
@@ -144,7 +100,8 @@ template <int D>
 template <class Kernel>
 void FluidSolver<D>::compute_rates_with(const Kernel& kernel) {
   const int every = params_.density_filter_every;
-  filtered_this_step_ = every > 0 && step_ > 0 && step_ % static_cast<std::uint64_t>(every) == 0;
+  filtered_this_step_ = every > 0 && step_ > 0 && step_ % static_cast<std::uint64_t>(every) == 0 &&
+                        !damping_.frozen(time_);
   update_water_pressure(params_, particles_);
   update_wall_state(neighbours_, kernel, params_, particles_);
   if (filtered_this_step_) {  // the filter uses the wall densities; then walls follow the water
@@ -153,9 +110,9 @@ void FluidSolver<D>::compute_rates_with(const Kernel& kernel) {
     update_wall_state(neighbours_, kernel, params_, particles_);
   }
   const RateSummary r = compute_fluid_rates(neighbours_, kernel, params_, particles_);
-  limits_ = time_step_limits(params_.h, params_.eos.c0(), r.max_speed,
-                             params_.mu / params_.eos.rho0(), r.max_total_acceleration, params_.cfl,
-                             params_.viscous_coefficient, params_.c_a);
+  limits_ = sph::time_step_limits(params_.h, params_.eos.c0(), r.max_speed,
+                                  params_.mu / params_.eos.rho0(), r.max_total_acceleration,
+                                  params_.cfl, params_.viscous_coefficient, params_.c_a);
 }
 
 template <int D>
@@ -232,7 +189,7 @@ void FluidSolver<D>::fill_state(coupling::StepState& out, const std::vector<doub
   d.max_speed = std::sqrt(max_v2);
   d.momentum.assign(momentum, momentum + D);
   const sph::ParticleView<D> view{P.position.data(), P.velocity.data(), P.mass.data(),
-                                  P.pressure.data(), P.n_free};
+                                  P.pressure.data(), P.n_free,          P.density.data()};
   for (const auto& o : observables_) d.observables[o.name] = evaluate(o, view);
   d.physics_seconds = physics_seconds_;
 }
@@ -262,31 +219,55 @@ void FluidSolver<D>::advance(double dt) {
     interaction_nonzero_ = false;
   }
   interaction_fresh_ = false;
-  const bool euler = sph::is_euler_step(step_, params_.euler_every) || filtered_this_step_;
-  const std::int64_t n = static_cast<std::int64_t>(P.n_free);
-#pragma omp parallel for schedule(static)
-  for (std::int64_t a = 0; a < n; ++a) {
-    sph::verlet_step<D>(P.position[a], P.velocity[a], P.velocity_previous[a],
-                        P.acceleration[a] + P.interaction[a], dt, euler);
-    sph::verlet_step_scalar(P.density[a], P.density_previous[a], P.density_rate[a], dt, euler);
-    box_.wrap(P.position[a]);
-  }
-  remove_particles_outside();
+  if (!damping_.frozen(time_)) integrate(dt);  // else the water waits (damping_stage.h)
   time_ += dt;
   ++step_;
   remove_expired_walls();
 }
 
 template <int D>
-void FluidSolver<D>::remove_particles_outside() {
-  const FluidParticles<D>& P = particles_;
+void FluidSolver<D>::integrate(double dt) {
+  FluidParticles<D>& P = particles_;
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
-  std::int64_t outside = 0;
-#pragma omp parallel for schedule(static) reduction(+ : outside)
-  for (std::int64_t a = 0; a < n; ++a) outside += box_.outside(P.position[a]) ? 1 : 0;
-  if (outside == 0) return;
-  keep_scratch_.assign(P.size(), 1);
-  for (std::int64_t a = 0; a < n; ++a) keep_scratch_[a] = box_.outside(P.position[a]) ? 0 : 1;
+  const bool release = damping_.release(time_);
+  if (release) {  // end of the damping stage: every water velocity zeroed once
+    std::fill(P.velocity.begin(), P.velocity.begin() + n, sph::Vec<D>::Zero());
+    std::fill(P.velocity_previous.begin(), P.velocity_previous.begin() + n, sph::Vec<D>::Zero());
+  }
+  const bool euler =
+      sph::is_euler_step(step_, params_.euler_every) || filtered_this_step_ || release;
+  zones_.begin_step(time_, dt);
+  std::int64_t past_zone = 0;  // zone particles past their downstream face
+#pragma omp parallel for schedule(static) reduction(+ : past_zone)
+  for (std::int64_t a = 0; a < n; ++a) {
+    if (P.zone[a] >= 0) {  // prescribed velocity (flow_zones.h)
+      past_zone += zones_.move(P.zone[a], P.position[a], P.velocity[a], P.velocity_previous[a], dt);
+    } else {
+      sph::verlet_step<D>(P.position[a], P.velocity[a], P.velocity_previous[a],
+                          P.acceleration[a] + P.interaction[a], dt, euler);
+    }
+    sph::verlet_step_scalar(P.density[a], P.density_previous[a], P.density_rate[a], dt, euler);
+    box_.wrap(P.position[a]);
+  }
+  if (past_zone > 0) born_count_ += zones_.renew(P, params_.volume, next_id_);
+  remove_leaving_particles();
+}
+
+template <int D>
+bool FluidSolver<D>::leaves(std::size_t a) const {
+  const FluidParticles<D>& P = particles_;
+  return box_.outside(P.position[a]) || (P.zone[a] < 0 && zones_.in_outflow(P.position[a]));
+}
+
+template <int D>
+void FluidSolver<D>::remove_leaving_particles() {
+  const std::int64_t n = static_cast<std::int64_t>(particles_.n_free);
+  std::int64_t leaving = 0;
+#pragma omp parallel for schedule(static) reduction(+ : leaving)
+  for (std::int64_t a = 0; a < n; ++a) leaving += leaves(a) ? 1 : 0;
+  if (leaving == 0) return;
+  keep_scratch_.assign(particles_.size(), 1);
+  for (std::int64_t a = 0; a < n; ++a) keep_scratch_[a] = leaves(a) ? 0 : 1;
   removed_count_ += particles_.compact(keep_scratch_);
 }
 
@@ -306,64 +287,6 @@ void FluidSolver<D>::remove_expired_walls() {
     }
   }
   P.compact(keep_scratch_);
-}
-
-template <int D>
-std::optional<std::string> FluidSolver<D>::find_non_finite(std::int64_t* particle_id) const {
-  const FluidParticles<D>& P = particles_;
-  const std::int64_t n = static_cast<std::int64_t>(P.size());
-  std::int64_t first = n;
-#pragma omp parallel for schedule(static) reduction(min : first)
-  for (std::int64_t a = 0; a < n; ++a) {
-    if (!P.position[a].allFinite() || !P.velocity[a].allFinite() || !std::isfinite(P.density[a]))
-      first = std::min(first, a);
-  }
-  if (first == n) return std::nullopt;
-  const char* what = !P.position[first].allFinite()   ? "position"
-                     : !P.velocity[first].allFinite() ? "velocity"
-                                                      : "density";
-  std::ostringstream msg;
-  msg << "non-finite " << what << " of " << (P.fixed[first] ? "wall" : "water") << " particle "
-      << P.id[first] << " (x = ";
-  for (int k = 0; k < D; ++k) msg << (k ? ", " : "") << P.position[first][k];
-  msg << "; v = ";
-  for (int k = 0; k < D; ++k) msg << (k ? ", " : "") << P.velocity[first][k];
-  msg << "; rho = " << P.density[first] << ") at step " << step_ << ", t = " << time_ << " s";
-  if (particle_id != nullptr) *particle_id = P.id[first];
-  return msg.str();
-}
-
-template <int D>
-std::vector<io::FieldView> FluidSolver<D>::snapshot_fields() const {
-  const FluidParticles<D>& P = particles_;
-  const std::size_t n = P.size();
-  auto f64 = [n](const char* name, std::size_t cols, const double* data) {
-    io::FieldView f;
-    f.name = name;
-    f.rows = n;
-    f.cols = cols;
-    f.f64 = data;
-    f.type = io::FieldType::F64;
-    return f;
-  };
-  std::vector<io::FieldView> fields;
-  fields.push_back(f64("position", D, n ? P.position[0].data() : nullptr));
-  fields.push_back(f64("velocity", D, n ? P.velocity[0].data() : nullptr));
-  fields.push_back(f64("density", 1, P.density.data()));
-  fields.push_back(f64("pressure", 1, P.pressure.data()));
-  io::FieldView id;
-  id.name = "id";
-  id.rows = n;
-  id.i64 = P.id.data();
-  id.type = io::FieldType::I64;
-  fields.push_back(id);
-  io::FieldView fixed;
-  fixed.name = "fixed";
-  fixed.rows = n;
-  fixed.u8 = P.fixed.data();
-  fixed.type = io::FieldType::U8;
-  fields.push_back(fixed);
-  return fields;
 }
 
 template class FluidSolver<2>;

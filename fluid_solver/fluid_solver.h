@@ -10,9 +10,10 @@
 #include <string>
 #include <vector>
 
+#include "fluid_solver/damping_stage.h"
+#include "fluid_solver/flow_zones.h"
 #include "fluid_solver/fluid_params.h"
 #include "fluid_solver/fluid_particles.h"
-#include "fluid_solver/time_step_limits.h"
 #include "io/snapshot_writer.h"
 #include "proto/coupling_client.h"
 #include "scene/scene.h"
@@ -20,22 +21,22 @@
 #include "sph/kernels.h"
 #include "sph/neighbour_list.h"
 #include "sph/observables.h"
+#include "sph/time_step_limits.h"
 
 namespace porosph::fluid {
 
 template <int D>
 class FluidSolver {
  public:
-  /// Particles from scene.water.blocks (lattice points inside wall shapes skipped, points outside
-  /// the domain dropped) and from scene.walls (points beyond a periodic axis' range dropped).
-  /// Masses are m = rho(t=0) dp^D. Throws std::invalid_argument on a bad scene.
+  /// Particles from scene.water.blocks, the inflow zones and the walls acting on water
+  /// (initial_particles.h); masses m = rho(t=0) dp^D. Throws std::invalid_argument on a bad scene.
   explicit FluidSolver(const scene::Scene& scene);
 
   /// Neighbour search + wall state + all internal accelerations and drho/dt (+ density filter on
   /// its steps).
   void compute_rates();
   /// Time-step limits of the state of the last compute_rates().
-  DtLimits dt_limits() const { return limits_; }
+  sph::DtLimits dt_limits() const { return limits_; }
 
   /// Diagnostics of the water particles and the overlap set: the water particles inside
   /// [overlap_min, overlap_max] (empty vectors: no overlap particles). Reuses out's vectors.
@@ -45,8 +46,11 @@ class FluidSolver {
   /// Adds accelerations (n*D, row-major) to the overlap particles of the last fill_state, same
   /// order. Throws std::invalid_argument on a size mismatch.
   void add_interaction(const std::vector<double>& acceleration);
-  /// Modified Verlet step, periodic wrap, removal of particles leaving the domain, removal of walls
-  /// whose time has come; time += dt; ++step.
+  /// Modified Verlet step of the free water; prescribed motion of the inflow zones' particles and
+  /// renewal of the zones (flow_zones.h); periodic wrap; removal of the water that left the domain
+  /// or entered an outflow zone (counted in removed_count); none of this while the damping stage
+  /// freezes the water (damping_stage.h). Then time += dt, ++step, and removal of the walls whose
+  /// time has come.
   void advance(double dt);
 
   /// "non-finite velocity of particle 123 (x = ...)" and *particle_id = 123, or std::nullopt when
@@ -61,11 +65,15 @@ class FluidSolver {
   std::size_t particle_count() const { return particles_.size(); }
   std::size_t free_count() const { return particles_.n_free; }
   std::uint64_t removed_count() const { return removed_count_; }
+  /// Water particles created by the inflow zones so far.
+  std::uint64_t born_count() const { return born_count_; }
 
   // Read access for tests and tools.
   const FluidParticles<D>& particles() const { return particles_; }
   const FluidParams<D>& params() const { return params_; }
   const sph::NeighbourList<D>& neighbours() const { return neighbours_; }
+  const FlowZones<D>& flow_zones() const { return zones_; }
+  const DampingStage& damping_stage() const { return damping_; }
 
  private:
   enum class KernelKind { CubicSpline, WendlandC2 };
@@ -73,7 +81,10 @@ class FluidSolver {
   void compute_rates_with(const Kernel& kernel);
   void build_neighbours();
   void reorder_by_cell();
-  void remove_particles_outside();
+  void integrate(double dt);
+  /// True if water particle a left the domain or is a free particle in an outflow zone.
+  bool leaves(std::size_t a) const;
+  void remove_leaving_particles();
   void remove_expired_walls();
   double evaluate(const sph::PreparedObservable<D>& o, const sph::ParticleView<D>& view) const;
 
@@ -82,14 +93,18 @@ class FluidSolver {
   KernelKind kernel_kind_ = KernelKind::CubicSpline;
   sph::CubicSpline<D> cubic_;
   sph::WendlandC2<D> wendland_;
+  DampingStage damping_;
+  FlowZones<D> zones_;
   std::vector<sph::PreparedObservable<D>> observables_;
 
   FluidParticles<D> particles_;
   sph::NeighbourList<D> neighbours_;
-  DtLimits limits_;
+  sph::DtLimits limits_;
   double time_ = 0.0;
   std::uint64_t step_ = 0;
   std::uint64_t removed_count_ = 0;
+  std::uint64_t born_count_ = 0;
+  std::int64_t next_id_ = 0;  ///< id of the next particle born in an inflow zone
   bool filtered_this_step_ = false;
   bool interaction_fresh_ = false;    ///< add_interaction called since the last advance
   bool interaction_nonzero_ = false;  ///< particles_.interaction may hold non-zero values

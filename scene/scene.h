@@ -61,6 +61,28 @@ struct Domain {
   std::vector<double> max;
 };
 
+/// A water inflow zone ([[water.inflow]]): particles inside move at speed_at(t) along direction.
+struct InflowZone {
+  std::vector<double> min, max;  ///< the box [m]
+  std::vector<double> direction;  ///< unit flow direction (along one axis)
+  double speed = 0.0;             ///< full speed [m/s] (velocity, or flow_rate / cross_section)
+  double start_time = 0.0;        ///< [s]
+  double ramp_time = 0.0;         ///< [s]; 0: a step
+  /// 0 before start_time, then linear up to `speed` over ramp_time.
+  double speed_at(double time) const;
+};
+
+/// A water outflow zone ([[water.outflow]]): particles entering the box are removed.
+struct OutflowZone {
+  std::vector<double> min, max;  ///< the box [m]
+};
+
+/// Soil-water interaction settings ([coupling]).
+struct CouplingSettings {
+  double submerged_saturation = 0.8;  ///< water fraction from which soil is submerged
+  double wet_saturation = 0.1;        ///< water fraction from which soil is wet
+};
+
 /// Water phase (table [water]).
 struct WaterPhase {
   double rho0 = 1000.0;             ///< rest density [kg/m^3]
@@ -70,10 +92,13 @@ struct WaterPhase {
   double beta = 0.0;                ///< Monaghan artificial viscosity beta
   double gamma = 7.0;               ///< Tait exponent of eq. 4
   int density_filter_every = 0;     ///< Shepard density re-initialisation every N steps; 0: off
+  double density_diffusion = 0.1;   ///< delta of the density diffusion term (delta-SPH); 0: off
   bool hydrostatic_initial = true;  ///< initial density from hydrostatic pressure (inverse eq. 4)
   std::string wall_condition = "no_slip";  ///< "no_slip" | "free_slip"
   std::string solver;                      ///< executable; empty: the built-in fluid_solver
   std::vector<Shape> blocks;               ///< regions filled with water at t = 0
+  std::vector<InflowZone> inflows;
+  std::vector<OutflowZone> outflows;
 };
 
 /// One soil material ([[soil.materials]]): Drucker-Prager skeleton (eq. 6-12) and the seepage
@@ -119,12 +144,14 @@ struct SoilPhase {
   std::string k0 = "jaky";              ///< "jaky" (1 - sin phi) | "elastic" (nu / (1 - nu))
   double damping_duration = 0.0;        ///< [s] initial damping stage; 0: none
   double damping_coefficient = 0.02;    ///< D = coefficient sqrt(E / (rho h^2))
+  int stress_filter_every = 0;          ///< Shepard stress filter every N steps; 0: off
   std::vector<SoilMaterial> materials;
   std::vector<Shape> blocks;  ///< regions filled with soil at t = 0; `material` names one
 
   /// Index into `materials` of the material named `name`, or -1.
   int material_index(const std::string& name) const;
-  /// max over the materials of sqrt(K / density) [m/s] (0 without materials).
+  /// max over the materials of the P-wave speed sqrt((K + 4 G / 3) / density) [m/s] (0 without
+  /// materials): the fastest elastic wave, which bounds the explicit time step.
   double stiffest_sound_speed() const;
   /// sound_speed if set (> 0), else stiffest_sound_speed().
   double effective_sound_speed() const;
@@ -155,12 +182,15 @@ struct Scene {
   std::optional<SoilPhase> soil;
   std::vector<Shape> walls;  ///< fixed wall particles; each acts on the phases it lists
   std::vector<Observable> observables;
+  CouplingSettings coupling;
 
   double h() const { return run.h_factor * run.dp; }
   bool has_water() const { return water.has_value(); }
   bool has_soil() const { return soil.has_value(); }
   /// Names of the phases present, in a fixed order: "water", then "soil".
   std::vector<std::string> phases() const;
+  /// The walls that act on `phase` (those whose `phases` is empty or names it).
+  std::vector<Shape> walls_acting_on(const std::string& phase) const;
 };
 
 }  // namespace porosph::scene

@@ -1,4 +1,5 @@
 // The typed Scene read from a validated, default-filled table (the soil phase: scene_soil.cpp).
+#include <algorithm>
 #include <cmath>
 
 #include "scene/scene_internal.h"
@@ -86,15 +87,18 @@ Scene build_scene(const toml::table& root) {
     w.beta = *(*water)["beta"].value<double>();
     w.gamma = *(*water)["gamma"].value<double>();
     w.density_filter_every = static_cast<int>(*(*water)["density_filter_every"].value<int64_t>());
+    w.density_diffusion = *(*water)["density_diffusion"].value<double>();
     w.hydrostatic_initial = *(*water)["hydrostatic_initial"].value<bool>();
     w.wall_condition = text_of(*water, "wall_condition");
     w.solver = text_of(*water, "solver");
     w.blocks = shapes_of(water->get_as<toml::array>("blocks"));
+    build_flow_zones(*water, w);
     scene.water = std::move(w);
   }
   if (const toml::table* soil = root.get_as<toml::table>("soil"))
     scene.soil = build_soil_phase(*soil);
   scene.walls = shapes_of(root.get_as<toml::array>("walls"));
+  scene.coupling = build_coupling(root);
 
   if (const toml::array* observables = root.get_as<toml::array>("observables")) {
     for (const auto& element : *observables) {
@@ -124,6 +128,15 @@ std::vector<std::string> Scene::phases() const {
     if ((phase == "water" && has_water()) || (phase == "soil" && has_soil()))
       present.push_back(phase);
   return present;
+}
+
+std::vector<Shape> Scene::walls_acting_on(const std::string& phase) const {
+  std::vector<Shape> acting;
+  for (const Shape& w : walls) {
+    if (w.phases.empty() || std::find(w.phases.begin(), w.phases.end(), phase) != w.phases.end())
+      acting.push_back(w);
+  }
+  return acting;
 }
 
 }  // namespace porosph::scene

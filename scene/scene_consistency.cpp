@@ -175,6 +175,8 @@ void check_scene_consistency(const toml::table& root, int dimension, const Error
   if (const toml::array* blocks = root["water"]["blocks"].as_array())
     for (std::size_t i = 0; i < blocks->size(); ++i)
       shapes.check(*blocks->get(i)->as_table(), "water.blocks[" + std::to_string(i) + "]", true);
+  if (const toml::table* water = root.get_as<toml::table>("water"))
+    check_flow_zones(*water, shapes, errors);
   if (const toml::table* soil = root.get_as<toml::table>("soil"))
     check_soil_consistency(*soil, shapes, errors);
   if (const toml::array* walls = root.get_as<toml::array>("walls"))

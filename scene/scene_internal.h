@@ -105,6 +105,17 @@ void check_soil_consistency(const toml::table& soil, const ShapeChecker& shapes,
 /// The typed soil phase from a validated, default-filled [soil] table.
 SoilPhase build_soil_phase(const toml::table& soil);
 
+// ---- water flow zones and coupling settings (scene_flow.cpp) ----
+
+/// Relations inside [[water.inflow]] / [[water.outflow]]: min < max, exactly one of velocity and
+/// flow_rate (+ cross_section), direction along one axis.
+void check_flow_zones(const toml::table& water, const ShapeChecker& shapes,
+                      const ErrorContext& errors);
+/// Fills w.inflows and w.outflows from a validated [water] table.
+void build_flow_zones(const toml::table& water, WaterPhase& w);
+/// The [coupling] settings (defaults when the table is absent).
+CouplingSettings build_coupling(const toml::table& root);
+
 // ---- pipeline steps ----
 
 /// Applies each "a.b=value" to `root` (scene_overrides.cpp). Throws SceneError (file "--set").

@@ -62,11 +62,12 @@ void add_scene_and_run(SceneSchema& s) {
                        .at_most(1)
                        .doc("C_cfl in dt_cfl = C_cfl h / (c + |v|max)."));
   s.keys.push_back(Key("run.c_a", T::Float)
-                       .fallback("0.25")
+                       .derived("0.005 when the scene has water and soil (the seed paper's value "
+                                "for coupled runs), else 0.25")
                        .above(0)
                        .at_most(1)
-                       .doc("C_a in dt_force = C_a min sqrt(h / |a|) (eq. 21); 0.005 is advised "
-                            "for coupled runs."));
+                       .doc("C_a in dt_force = C_a min sqrt(h / |a|) (eq. 21), |a| the total "
+                            "acceleration, interaction included."));
   s.keys.push_back(Key("run.viscous_coefficient", T::Float)
                        .fallback("0.125")
                        .above(0)
@@ -141,6 +142,14 @@ void add_water(SceneSchema& s) {
                        .fallback("0")
                        .at_least(0)
                        .doc("Shepard density re-initialisation every this many steps; 0: off."));
+  s.keys.push_back(Key("water.density_diffusion", T::Float)
+                       .fallback("0.1")
+                       .at_least(0)
+                       .at_most(1)
+                       .doc("delta of the density diffusion term added to the continuity equation "
+                            "(Molteni & Colagrossi 2009, with the hydrostatic correction of "
+                            "Fourtakas et al. 2019), between water particles; 0 switches it off. "
+                            "0.1 is the standard value."));
   s.keys.push_back(Key("water.hydrostatic_initial", T::Bool)
                        .fallback("true")
                        .doc("Initial density from the hydrostatic pressure (inverse of eq. 4)."));
@@ -219,7 +228,9 @@ SceneSchema make_scene_schema() {
   SceneSchema schema;
   add_scene_and_run(schema);
   add_water(schema);
+  add_flow_zones(schema);
   add_soil(schema);
+  add_coupling(schema);
   add_walls_and_observables(schema);
   return schema;
 }

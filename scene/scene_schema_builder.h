@@ -94,6 +94,10 @@ using T = ValueType;
 void add_scene_and_run(SceneSchema& s);
 /// [water], [[water.blocks]] (scene_schema.cpp).
 void add_water(SceneSchema& s);
+/// [[water.inflow]], [[water.outflow]] (scene_flow.cpp).
+void add_flow_zones(SceneSchema& s);
+/// [coupling] (scene_flow.cpp).
+void add_coupling(SceneSchema& s);
 /// [soil], [[soil.materials]], [[soil.blocks]] (scene_schema_soil.cpp).
 void add_soil(SceneSchema& s);
 /// The region keys every filled block has: shape (box | polygon), min, max, vertices, for the

@@ -40,7 +40,7 @@ void add_soil_settings(SceneSchema& s) {
                        .fallback("0.0")
                        .at_least(0)
                        .doc("Numerical sound speed (time-step limit, artificial viscosity); 0: "
-                            "from the stiffest material, max sqrt(K / density)."));
+                            "from the stiffest material, max sqrt((K + 4 G / 3) / density) (the P-wave speed)."));
   s.keys.push_back(
       Key("soil.initial_stress", T::String)
           .fallback("\"none\"")
@@ -62,6 +62,12 @@ void add_soil_settings(SceneSchema& s) {
                        .at_least(0)
                        .doc("Damping during that stage: D = coefficient sqrt(E / (density h^2)) "
                             "[1/s]."));
+  s.keys.push_back(Key("soil.stress_filter_every", T::Int)
+                       .fallback("0")
+                       .at_least(0)
+                       .doc("Shepard filter of the soil stress every N steps (stress "
+                            "regularisation, Nguyen et al. 2017); removes the row-to-row stress "
+                            "oscillation the pair form of eq. 5 cannot see; 0: off."));
 }
 
 void add_soil_materials(SceneSchema& s) {

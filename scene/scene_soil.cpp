@@ -146,6 +146,7 @@ SoilPhase build_soil_phase(const toml::table& soil) {
   p.k0 = text_of(soil, "k0");
   p.damping_duration = *soil["damping_duration"].value<double>();
   p.damping_coefficient = *soil["damping_coefficient"].value<double>();
+  p.stress_filter_every = static_cast<int>(*soil["stress_filter_every"].value<int64_t>());
   for (const auto& element : *soil.get_as<toml::array>("materials"))
     p.materials.push_back(material_of(*element.as_table()));
   p.blocks = shapes_of(soil.get_as<toml::array>("blocks"));
@@ -161,7 +162,10 @@ int SoilPhase::material_index(const std::string& name) const {
 double SoilPhase::stiffest_sound_speed() const {
   double fastest = 0.0;
   for (const SoilMaterial& m : materials)
-    if (m.density > 0.0) fastest = std::max(fastest, std::sqrt(m.bulk_modulus / m.density));
+    if (m.density > 0.0) {  // P-wave modulus K + 4G/3: the fastest elastic wave of the skeleton
+      fastest = std::max(
+          fastest, std::sqrt((m.bulk_modulus + 4.0 * m.shear_modulus / 3.0) / m.density));
+    }
   return fastest;
 }
 

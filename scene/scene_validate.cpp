@@ -40,6 +40,7 @@ std::string derived_default(const KeySpec& spec, const std::vector<std::string>&
       list += (i == 0 ? "\"" : ", \"") + phases[i] + "\"";
     return list + "]";
   }
+  if (spec.path == "run.c_a") return phases.size() > 1 ? "0.005" : "0.25";
   if (spec.path == "observables[].phase")
     return "\"" + (phases.empty() ? std::string("water") : phases.front()) + "\"";
   throw std::logic_error("scene schema: no rule for the derived default of " + spec.path);

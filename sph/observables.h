@@ -1,94 +1,72 @@
 // Observables (scene::Observable): quantities measured on the free particles of one phase at every
-// output time. Each is a plain O(N) reduction over a read-only view of the particles.
+// output time. prepare_observable decodes a scene observable once (kind, field, vectors, region);
+// evaluate_observable then runs one O(N) reduction (sph/observable_reductions.h) without string
+// work or allocation.
+//
+// Rules for missing data: a kind that needs a field the view does not provide (its pointer in
+// ParticleView is null, e.g. porosity on water, pressure on soil, displacement on water) evaluates
+// to NaN; so does mean_field velocity_z in 2D. Whether the field exists cannot be checked at
+// prepare time (there is no view yet); the scene loader already rejects such combinations.
+// With a region and no particle inside it: front_position, max_height and mean_field give NaN;
+// max_speed, kinetic_energy, particle_count and max_displacement give 0.
 #pragma once
 
-#include <algorithm>
-#include <cmath>
-#include <cstddef>
-#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
 #include "scene/scene.h"
+#include "sph/observable_reductions.h"
 #include "sph/vector.h"
 
 namespace porosph::sph {
 
-/// Read-only view of the free particles of a phase (structure of arrays; pressure may be null for
-/// a phase without pressure).
-template <int D>
-struct ParticleView {
-  const Vec<D>* position = nullptr;
-  const Vec<D>* velocity = nullptr;
-  const double* mass = nullptr;
-  const double* pressure = nullptr;
-  std::size_t count = 0;
-};
-
-/// front_position / max_height: max_i (x_i - origin) . direction; NaN without particles.
-template <int D>
-double front_position(const ParticleView<D>& p, const Vec<D>& origin, const Vec<D>& direction) {
-  double best = -std::numeric_limits<double>::infinity();
-  const std::int64_t n = static_cast<std::int64_t>(p.count);
-#pragma omp parallel for reduction(max : best) schedule(static)
-  for (std::int64_t i = 0; i < n; ++i)
-    best = std::max(best, (p.position[i] - origin).dot(direction));
-  return n > 0 ? best : std::numeric_limits<double>::quiet_NaN();
-}
-
-/// max_i |v_i| (0 without particles).
-template <int D>
-double max_speed(const ParticleView<D>& p) {
-  double best2 = 0.0;
-  const std::int64_t n = static_cast<std::int64_t>(p.count);
-#pragma omp parallel for reduction(max : best2) schedule(static)
-  for (std::int64_t i = 0; i < n; ++i) best2 = std::max(best2, p.velocity[i].squaredNorm());
-  return std::sqrt(best2);
-}
-
-/// sum_i m_i |v_i|^2 / 2 [J] (per metre of depth in 2D).
-template <int D>
-double kinetic_energy(const ParticleView<D>& p) {
-  double e = 0.0;
-  const std::int64_t n = static_cast<std::int64_t>(p.count);
-#pragma omp parallel for reduction(+ : e) schedule(static)
-  for (std::int64_t i = 0; i < n; ++i) e += 0.5 * p.mass[i] * p.velocity[i].squaredNorm();
-  return e;
-}
-
-/// Shepard-interpolated pressure at `point`: sum_i p_i W_i / sum_i W_i over the particles within
-/// the kernel support; NaN if there is none. (Minimum image is not applied: probes are meant to be
-/// away from periodic faces.)
-template <int D, class Kernel>
-double pressure_at(const ParticleView<D>& p, const Vec<D>& point, const Kernel& kernel) {
-  if (p.pressure == nullptr) return std::numeric_limits<double>::quiet_NaN();
-  double sum_pw = 0.0, sum_w = 0.0;
-  const double support2 = kernel.support() * kernel.support();
-  const std::int64_t n = static_cast<std::int64_t>(p.count);
-#pragma omp parallel for reduction(+ : sum_pw, sum_w) schedule(static)
-  for (std::int64_t i = 0; i < n; ++i) {
-    const double r2 = (p.position[i] - point).squaredNorm();
-    if (r2 >= support2) continue;
-    const double w = kernel.w(std::sqrt(r2));
-    sum_pw += p.pressure[i] * w;
-    sum_w += w;
-  }
-  return sum_w > 0.0 ? sum_pw / sum_w : std::numeric_limits<double>::quiet_NaN();
-}
-
-/// An observable with its kind decoded and its vectors converted, ready to evaluate every step
-/// without string work or allocation.
+/// An observable with its kind and field decoded and its vectors converted, ready to evaluate
+/// every step without string work or allocation.
 template <int D>
 struct PreparedObservable {
-  enum class Kind { FrontPosition, MaxHeight, MaxSpeed, KineticEnergy, ParticleCount, PressureAt };
+  enum class Kind {
+    FrontPosition,
+    MaxHeight,
+    MaxSpeed,
+    KineticEnergy,
+    ParticleCount,
+    PressureAt,
+    MeanField,
+    MaxDisplacement
+  };
+  using Field = ParticleField;
   std::string name;
   Kind kind = Kind::MaxSpeed;
   Vec<D> origin = Vec<D>::Zero(), direction = Vec<D>::Zero(), point = Vec<D>::Zero();
+  Field field = Field::Density;  ///< MeanField only
+  Region<D> region;              ///< every kind but PressureAt; has_region = false: all particles
 };
 
+/// The ParticleField named `name` (observables[].field); throws std::invalid_argument naming
+/// `what` for an unknown name.
+inline ParticleField parse_particle_field(const std::string& name, const std::string& what) {
+  static constexpr struct {
+    const char* name;
+    ParticleField field;
+  } table[] = {{"density", ParticleField::Density},      {"pressure", ParticleField::Pressure},
+               {"porosity", ParticleField::Porosity},    {"speed", ParticleField::Speed},
+               {"velocity_x", ParticleField::VelocityX}, {"velocity_y", ParticleField::VelocityY},
+               {"velocity_z", ParticleField::VelocityZ}, {"stress_xx", ParticleField::StressXX},
+               {"stress_yy", ParticleField::StressYY},   {"stress_zz", ParticleField::StressZZ},
+               {"stress_xy", ParticleField::StressXY},   {"stress_xz", ParticleField::StressXZ},
+               {"stress_yz", ParticleField::StressYZ}};
+  for (const auto& entry : table)
+    if (name == entry.name) return entry.field;
+  throw std::invalid_argument(what + ": unknown field '" + name + "'");
+}
+
 /// Decodes kind front_position | max_height | max_speed | kinetic_energy | particle_count |
-/// pressure_at. Throws std::invalid_argument on an unknown kind or a vector of the wrong length.
+/// pressure_at | mean_field | max_displacement, the field of mean_field and the optional region.
+/// Throws std::invalid_argument on an unknown kind or field, a missing direction / point / field,
+/// a vector of the wrong length, region_min without region_max (or the reverse), a region with
+/// region_max <= region_min in some component, a region on pressure_at, or a field on a kind
+/// other than mean_field.
 template <int D>
 PreparedObservable<D> prepare_observable(const scene::Observable& o) {
   using Kind = typename PreparedObservable<D>::Kind;
@@ -110,12 +88,36 @@ PreparedObservable<D> prepare_observable(const scene::Observable& o) {
     p.kind = Kind::PressureAt;
     p.point = to_vec<D>(o.point, what + " point");
     if (o.point.empty()) throw std::invalid_argument(what + ": point is required");
+  } else if (o.kind == "mean_field") {
+    p.kind = Kind::MeanField;
+    if (o.field.empty()) throw std::invalid_argument(what + ": field is required for mean_field");
+    p.field = parse_particle_field(o.field, what);
+  } else if (o.kind == "max_displacement") {
+    p.kind = Kind::MaxDisplacement;
   } else {
     throw std::invalid_argument(what + ": unknown kind '" + o.kind + "'");
+  }
+  if (!o.field.empty() && p.kind != Kind::MeanField)
+    throw std::invalid_argument(what + ": field is only allowed for kind mean_field");
+
+  if (o.region_min.empty() != o.region_max.empty())
+    throw std::invalid_argument(what + ": give region_min and region_max together or neither");
+  if (!o.region_min.empty()) {
+    if (p.kind == Kind::PressureAt)
+      throw std::invalid_argument(what + ": pressure_at takes no region");
+    p.region.has_region = true;
+    p.region.lo = to_vec<D>(o.region_min, what + " region_min");
+    p.region.hi = to_vec<D>(o.region_max, what + " region_max");
+    if (!(p.region.hi.array() > p.region.lo.array()).all())
+      throw std::invalid_argument(what +
+                                  ": region_max must be greater than region_min in every "
+                                  "component");
   }
   return p;
 }
 
+/// Value of `o` on the particles `p` (the kernel is used by pressure_at only). See the file
+/// comment for the NaN / 0 rules.
 template <int D, class Kernel>
 double evaluate_observable(const PreparedObservable<D>& o, const ParticleView<D>& p,
                            const Kernel& kernel) {
@@ -123,15 +125,19 @@ double evaluate_observable(const PreparedObservable<D>& o, const ParticleView<D>
   switch (o.kind) {
     case Kind::FrontPosition:
     case Kind::MaxHeight:
-      return front_position(p, o.origin, o.direction);
+      return front_position(p, o.origin, o.direction, o.region);
     case Kind::MaxSpeed:
-      return max_speed(p);
+      return max_speed(p, o.region);
     case Kind::KineticEnergy:
-      return kinetic_energy(p);
+      return kinetic_energy(p, o.region);
     case Kind::ParticleCount:
-      return static_cast<double>(p.count);
+      return particle_count(p, o.region);
     case Kind::PressureAt:
       return pressure_at(p, o.point, kernel);
+    case Kind::MeanField:
+      return mean_field(p, o.field, o.region);
+    case Kind::MaxDisplacement:
+      return max_displacement(p, o.region);
   }
   return std::numeric_limits<double>::quiet_NaN();
 }

@@ -38,7 +38,8 @@ TEST(TimeStepController, RelaxesBackToDt0WhenNoLimitIsActive) {
     EXPECT_GE(dt, prev);
     prev = dt;
   }
-  // With r = dt0/dt the iteration is r -> (r + 1)/2: r - 1 halves each step, exactly dt0 long before 200.
+  // With r = dt0/dt the iteration is r -> (r + 1)/2: r - 1 halves each step, exactly dt0 long
+  // before 200.
   EXPECT_EQ(c.current(), 1e-4);
 }
 

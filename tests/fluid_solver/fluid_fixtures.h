@@ -29,6 +29,27 @@ inline scene::Shape container(std::vector<double> lo, std::vector<double> hi, in
   return s;
 }
 
+/// An inflow zone [lo, hi] moving water along `direction` at `speed` (ramp from start over ramp).
+inline scene::InflowZone inflow(std::vector<double> lo, std::vector<double> hi,
+                                std::vector<double> direction, double speed,
+                                double start_time = 0.0, double ramp_time = 0.0) {
+  scene::InflowZone z;
+  z.min = std::move(lo);
+  z.max = std::move(hi);
+  z.direction = std::move(direction);
+  z.speed = speed;
+  z.start_time = start_time;
+  z.ramp_time = ramp_time;
+  return z;
+}
+
+inline scene::OutflowZone outflow(std::vector<double> lo, std::vector<double> hi) {
+  scene::OutflowZone z;
+  z.min = std::move(lo);
+  z.max = std::move(hi);
+  return z;
+}
+
 /// A 2D water scene without blocks or walls: rho0 1000, c 20, mu 1e-3, alpha 0.05, g = -9.81 y.
 inline scene::Scene water_scene(double dp, std::vector<double> domain_min,
                                 std::vector<double> domain_max) {
@@ -45,7 +66,8 @@ inline scene::Scene water_scene(double dp, std::vector<double> domain_min,
   return s;
 }
 
-/// Particles at `x` (the first n_free water), all arrays sized, at rest, rho = rho0, m = m0.
+/// Particles at `x` (the first n_free water), all arrays sized, at rest, rho = rho0, m = m0, no
+/// inflow-zone particle.
 template <int D>
 FluidParticles<D> make_particles(const std::vector<sph::Vec<D>>& x, std::size_t n_free, double rho0,
                                  double m0) {
@@ -64,6 +86,7 @@ FluidParticles<D> make_particles(const std::vector<sph::Vec<D>>& x, std::size_t 
     P.remove_at[i] = -1.0;
     P.id[i] = static_cast<std::int64_t>(i);
     P.fixed[i] = i >= n_free;
+    P.zone[i] = -1;
   }
   return P;
 }

@@ -76,8 +76,10 @@ TEST(SceneSoil, GranularColumnGetsEveryDefault) {
   EXPECT_EQ(soil.blocks[0].max, (Doubles{0.2, 0.1}));
   EXPECT_EQ(soil.material_index("aluminium_bars"), 0);
   EXPECT_EQ(soil.material_index("sand"), -1);
-  // sound_speed 0: from the only material, sqrt(K / rho) = sqrt(0.7e6 / 2650) = 16.25 m/s.
-  EXPECT_NEAR(soil.effective_sound_speed(), std::sqrt(0.7e6 / 2650.0), 1e-12);
+  // sound_speed 0: from the only material, the P-wave speed sqrt((K + 4 G / 3) / rho) with
+  // K = E / (3 (1 - 2 nu)) = 0.7 MPa, G = E / (2 (1 + nu)) = 0.84e6 / 2.6: 20.66 m/s.
+  EXPECT_NEAR(soil.effective_sound_speed(), std::sqrt((0.7e6 + 4.0 / 3.0 * 0.84e6 / 2.6) / 2650.0),
+              1e-9);
 
   // The wall acts on every phase present (here: soil) with each phase's own condition.
   ASSERT_EQ(s.walls.size(), 1u);
@@ -118,9 +120,9 @@ TEST(SceneSoil, CoupledSceneHasBothPhases) {
   EXPECT_EQ(soil.damping_duration, 0.05);
   EXPECT_EQ(soil.damping_coefficient, 0.05);
   EXPECT_EQ(soil.effective_sound_speed(), 40.0);  // given: used as is
-  // The stiffest material is the sand: K = 1e7 / (3 (1 - 0.5)) over 1500 kg/m^3 (gravel: 5e6 /
-  // 1700 is smaller).
-  EXPECT_NEAR(soil.stiffest_sound_speed(), std::sqrt(1e7 / 1.5 / 1500.0), 1e-12);
+  // The stiffest material is the sand: K + 4G/3 = 1e7 / 1.5 + 4/3 * 1e7 / 2.5 = 12 MPa over
+  // 1500 kg/m^3 (gravel: (5e6 + 4e6) / 1700 is smaller).
+  EXPECT_NEAR(soil.stiffest_sound_speed(), std::sqrt(12e6 / 1500.0), 1e-9);
 
   ASSERT_EQ(soil.materials.size(), 2u);
   const SoilMaterial& gravel = soil.materials[0];

@@ -47,9 +47,8 @@ TimeSeries read_csv(const std::string& path) {
       }
       char* end = nullptr;
       const double value = std::strtod(cell.c_str(), &end);
-      series.columns[series.names[k]].push_back(end == cell.c_str()
-                                                    ? std::numeric_limits<double>::quiet_NaN()
-                                                    : value);
+      series.columns[series.names[k]].push_back(
+          end == cell.c_str() ? std::numeric_limits<double>::quiet_NaN() : value);
       ++k;
     }
   }

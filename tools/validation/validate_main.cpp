@@ -1,15 +1,62 @@
 // porosph_validate: compares a finished run with its case's reference and prints the error.
 //   porosph_validate dam_break RUN_DIR [--reference cases/dam_break/reference.csv]
 //   porosph_validate hydrostatic_tank RUN_DIR
+//   porosph_validate soil_column RUN_DIR
+//   porosph_validate granular_collapse RUN_DIR
+//   porosph_validate darcy_column RUN_DIR
 // Exit code 0 when the target is met, 1 when not, 2 on unreadable input.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 
 #include "tools/validation/case_checks.h"
+#include "tools/validation/seepage_checks.h"
+#include "tools/validation/soil_checks.h"
 
 #ifndef POROSPH_SOURCE_DIR
 #define POROSPH_SOURCE_DIR "."
 #endif
+
+namespace {
+
+int report_soil_column(const porosph::validation::SoilColumnCheck& c) {
+  std::printf(
+      "soil_column at t = %.3f s, %zu particles (top and bottom two rows excluded)\n"
+      "vertical stress vs weight above: per particle max %.2f%% mean %.2f%%; row mean max %.2f%%"
+      " (target 3%%)\n"
+      "sigma_h / sigma_v: mean %.3f, rows %.3f..%.3f; K0 elastic nu/(1-nu) = %.3f, Jaky 1 - "
+      "sin(phi)"
+      " = %.3f; sigma_zz / sigma_v %.3f\nmax speed %.2e m/s\n",
+      c.time, c.particles, 100 * c.max_rel_error, 100 * c.mean_rel_error, 100 * c.max_row_rel_error,
+      c.mean_ratio, c.min_ratio, c.max_ratio, c.k0_elastic, c.k0_jaky, c.mean_out_of_plane_ratio,
+      c.max_speed);
+  return c.max_rel_error <= 0.03 ? 0 : 1;
+}
+
+int report_collapse(const porosph::validation::CollapseMeasurement& c) {
+  std::printf(
+      "granular_collapse at t = %.3f s, %zu particles, column %.3f m wide x %.3f m high\n"
+      "run-out from the back wall %.4f m (%.2f x width)\nheight at the back wall %.4f m (%.3f x"
+      " initial)\nmax speed %.2e m/s\n",
+      c.time, c.particles, c.initial_width, c.initial_height, c.runout, c.runout / c.initial_width,
+      c.height_at_wall, c.height_at_wall / c.initial_height, c.max_speed);
+  for (int t = 0; t < 3; ++t) {
+    std::printf("failure surface angle (moved > %.2f mm) %.1f deg\n", 1000 * c.thresholds[t],
+                c.failure_angle_deg[t]);
+  }
+  return 0;
+}
+
+int report_darcy_column(const porosph::validation::DarcyColumnCheck& c) {
+  std::printf(
+      "darcy_column (%s) at t = %.3f s: a = %.4g s/m, b = %.4g s^2/m^2\n"
+      "steady velocity from i = a q + b q^2 = 1: %.5g m/s; simulated %.5g m/s; error %.2f%%"
+      " (target 2%%)\nquadratic share of i: %.2f; change over the last output %.2e\n",
+      c.seepage.c_str(), c.time, c.a, c.b, c.expected, c.simulated, 100 * c.rel_error,
+      c.quadratic_share, c.settling);
+  return c.rel_error <= 0.02 ? 0 : 1;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"Compare a finished PoroSPH run with its reference"};
@@ -23,8 +70,17 @@ int main(int argc, char** argv) {
   tank->add_option("run_dir", run_dir)->required();
   bool print_rows = false;
   tank->add_flag("--rows", print_rows, "print the error of every lattice row");
+  auto* column = app.add_subcommand("soil_column", "dry soil column: vertical stress, K0");
+  column->add_option("run_dir", run_dir)->required();
+  auto* collapse = app.add_subcommand("granular_collapse", "run-out, height, failure angle");
+  collapse->add_option("run_dir", run_dir)->required();
+  auto* darcy = app.add_subcommand("darcy_column", "steady seepage velocity vs the seepage law");
+  darcy->add_option("run_dir", run_dir)->required();
   CLI11_PARSE(app, argc, argv);
   try {
+    if (*darcy) return report_darcy_column(porosph::validation::check_darcy_column(run_dir));
+    if (*column) return report_soil_column(porosph::validation::check_soil_column(run_dir));
+    if (*collapse) return report_collapse(porosph::validation::measure_collapse(run_dir));
     if (*dam) {
       const auto c = porosph::validation::compare_dam_break(run_dir, reference);
       std::printf("dam_break vs Martin & Moyce (1952), a = %.5f m\n%8s %8s %8s %8s\n", c.a, "T",
@@ -47,7 +103,8 @@ int main(int argc, char** argv) {
         h.time, h.depth, h.particles, 100 * h.max_rel_error, 100 * h.mean_rel_error,
         100 * h.max_row_rel_error, 100 * h.max_speed_ratio);
     if (print_rows) {
-      std::printf("%10s %12s %12s %10s %12s\n", "depth[m]", "p_exact", "p_mean", "mean err", "max err");
+      std::printf("%10s %12s %12s %10s %12s\n", "depth[m]", "p_exact", "p_mean", "mean err",
+                  "max err");
       for (const auto& row : h.rows) {
         std::printf("%10.4f %12.2f %12.2f %9.2f%% %11.2f%%\n", row.depth, row.exact, row.mean,
                     100 * (row.mean - row.exact) / row.exact, 100 * row.max_rel_error);

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <limits>
 
-namespace porosph::fluid {
+namespace porosph::sph {
 
 struct DtLimits {
   double cfl = std::numeric_limits<double>::infinity();

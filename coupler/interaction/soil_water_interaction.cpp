@@ -1,0 +1,122 @@
+#include "coupler/interaction/soil_water_interaction.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "coupler/interaction/soil_water_sums.h"
+#include "sph/kernels.h"
+
+namespace porosph::coupler {
+
+namespace {
+
+/// Standard gravity [m/s^2], used for the seepage coefficients of a scene without gravity: with
+/// Kozeny-Carman and Den Adel the products gamma_w a and gamma_w b do not depend on g, so any
+/// g > 0 gives the same force; a hydraulic conductivity is by convention measured under it.
+constexpr double kStandardGravity = 9.80665;
+
+InteractionParameters parameters_from_scene(const scene::Scene& s) {
+  const scene::WaterPhase& water = *s.water;
+  double g2 = 0.0;
+  for (double g : s.run.gravity) g2 += g * g;
+  const double gravity = g2 > 0.0 ? std::sqrt(g2) : kStandardGravity;
+  const double nu = water.viscosity / water.rho0;
+  InteractionParameters p;
+  p.h = s.h();
+  p.c_a = s.run.c_a;
+  p.unit_weight_water = water.rho0 * gravity;
+  p.submerged_saturation = s.coupling.submerged_saturation;
+  for (const scene::SoilMaterial& m : s.soil->materials) {
+    SoilMaterialTerms terms;
+    terms.law = SeepageLaw::from_material(m, gravity, nu);
+    if (!(m.density > 0.0)) {
+      throw std::invalid_argument("soil material '" + m.name + "': density must be > 0");
+    }
+    terms.submerged_ratio = submerged_density_ratio(m, water.rho0);
+    terms.fixed = m.fixed;
+    p.materials.push_back(terms);
+  }
+  return p;
+}
+
+template <int D>
+std::unique_ptr<InteractionEngine> make_engine(const scene::Scene& s) {
+  InteractionParameters p = parameters_from_scene(s);
+  const sph::DomainBox<D> box = sph::DomainBox<D>::from_scene(s, 2.0 * s.h());
+  if (s.run.kernel == "cubic_spline") {
+    return std::make_unique<SoilWaterSums<D, sph::CubicSpline<D>>>(std::move(p), box);
+  }
+  if (s.run.kernel == "wendland_c2") {
+    return std::make_unique<SoilWaterSums<D, sph::WendlandC2<D>>>(std::move(p), box);
+  }
+  throw std::invalid_argument("soil-water interaction: unknown run.kernel '" + s.run.kernel + "'");
+}
+
+}  // namespace
+
+SoilWaterInteraction::SoilWaterInteraction(const scene::Scene& scene)
+    : dimension_(scene.run.dimension) {
+  if (!scene.has_water() || !scene.has_soil()) {
+    throw std::invalid_argument("soil-water interaction: the scene needs both water and soil");
+  }
+  if (dimension_ == 2) {
+    engine_ = make_engine<2>(scene);
+  } else if (dimension_ == 3) {
+    engine_ = make_engine<3>(scene);
+  } else {
+    throw std::invalid_argument("soil-water interaction: run.dimension must be 2 or 3");
+  }
+  damping_duration_ = scene.soil->damping_duration;
+  material_count_ = scene.soil->materials.size();
+  out_.force_on_water.assign(dimension_, 0.0);
+  out_.force_on_soil.assign(dimension_, 0.0);
+}
+
+SoilWaterInteraction::~SoilWaterInteraction() = default;
+
+void SoilWaterInteraction::check_sizes(const coupling::StepState& state, const char* phase,
+                                       bool soil) const {
+  const std::size_t n = state.overlap_id.size(), d = static_cast<std::size_t>(dimension_);
+  auto expect = [&](std::size_t size, std::size_t expected, const char* what) {
+    if (size == expected) return;
+    throw std::runtime_error(std::string("the ") + phase + " solver sent " + std::to_string(size) +
+                             " " + what + " values for " + std::to_string(n) +
+                             " overlap particles (expected " + std::to_string(expected) + ")");
+  };
+  expect(state.overlap_position.size(), n * d, "overlap_position");
+  expect(state.overlap_velocity.size(), n * d, "overlap_velocity");
+  expect(state.overlap_density.size(), n, "overlap_density");
+  expect(state.overlap_mass.size(), n, "overlap_mass");
+  if (!soil) return;
+  expect(state.overlap_porosity.size(), n, "overlap_porosity");
+  expect(state.overlap_material.size(), n, "overlap_material");
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::int32_t m = state.overlap_material[i];
+    if (m < 0 || static_cast<std::size_t>(m) >= material_count_) {
+      throw std::runtime_error("the soil solver sent material index " + std::to_string(m) +
+                               " for overlap particle " + std::to_string(state.overlap_id[i]) +
+                               "; the scene has " + std::to_string(material_count_) +
+                               " soil materials");
+    }
+  }
+}
+
+InteractionSummary SoilWaterInteraction::compute(const coupling::StepState& water,
+                                                 const coupling::StepState& soil, double time) {
+  check_sizes(water, "water", false);
+  check_sizes(soil, "soil", true);
+  out_.force_on_water.assign(dimension_, 0.0);
+  out_.force_on_soil.assign(dimension_, 0.0);
+  out_.force_magnitude_sum = 0.0;
+  if (water.overlap_id.empty() || soil.overlap_id.empty()) {
+    out_.water_acceleration.clear();
+    out_.soil_acceleration.clear();
+    out_.saturation.clear();
+    return {};
+  }
+  const bool forces = !(time < damping_duration_);
+  return engine_->compute(water, soil, forces, out_);
+}
+
+}  // namespace porosph::coupler

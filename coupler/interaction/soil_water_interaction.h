@@ -1,0 +1,83 @@
+// The soil-water interaction the coupler computes each step (DESIGN.md section 1 step 3; seed
+// eq. 13-17, 20): for every soil-water pair within the kernel support 2h, the seepage force per
+// unit soil volume f_ia of eq. 13 (seepage_force.h), and from it
+//   soil  i:  a_i =  sum_a V_a f_ia W_ia / rho_i^s          (eq. 16, last term)
+//   water a:  a_a = -sum_i V_i f_ia W_ia / rho_a            (eq. 17, last term)
+// with V = m / rho and rho_i^s the submerged density of submerged_density.h, decided from the
+// saturation s_i = sum_a V_a W_ia (the kernel-weighted water volume fraction, ~1 inside water).
+// Eq. 17 of the paper writes the water term with m_i / rho_i^s; PoroSPH uses the soil particle's
+// volume V_i = m_i / rho_i, so that the pair impulse is antisymmetric: with the soil particle's
+// effective mass m_i^s = m_i rho_i^s / rho_i, m_i^s a_i and m_a a_a cancel pair by pair (the water
+// feels exactly the reaction of the drag it exerts on the soil volume V_i).
+// Fixed soil (a rigid porous bed) exchanges drag like free soil; the soil solver ignores the
+// acceleration it is sent, the bed absorbs that impulse.
+#pragma once
+
+#include <cstddef>
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include "proto/coupling_client.h"
+#include "scene/scene.h"
+
+namespace porosph::coupler {
+
+class InteractionEngine;  // soil_water_sums.h
+
+/// What one evaluation leaves for the coupler to send and to book.
+struct InteractionOutputs {
+  std::vector<double> water_acceleration;  ///< n_water x D, order of water.overlap_id; empty: none
+  std::vector<double> soil_acceleration;   ///< n_soil x D, order of soil.overlap_id; empty: none
+  std::vector<double> saturation;          ///< s_i per soil overlap particle; empty: none
+  std::vector<double> force_on_water;      ///< sum_a m_a a_a [N] (D components)
+  std::vector<double> force_on_soil;       ///< sum_i m_i^s a_i [N], fixed soil included
+  double force_magnitude_sum = 0.0;        ///< sum_i |m_i^s a_i| + sum_a |m_a a_a| [N]
+};
+
+/// What one evaluation found.
+struct InteractionSummary {
+  bool evaluated = false;         ///< both overlap sets were non-empty
+  bool forces = false;            ///< accelerations were computed (false in the damping stage)
+  std::size_t pair_count = 0;     ///< soil-water pairs with r < 2h
+  double max_acceleration = 0.0;  ///< max |a| over the water and free-soil overlap [m/s^2]
+  /// Eq. 21 for the interaction: C_a sqrt(h / max |a|) [s]; infinity without force.
+  double dt_limit = std::numeric_limits<double>::infinity();
+};
+
+class SoilWaterInteraction {
+ public:
+  /// Reads h, the kernel, run.c_a, gravity, the periodic domain, the water's rho0 and viscosity
+  /// (nu = viscosity / rho0), coupling.submerged_saturation, soil.damping_duration and every soil
+  /// material's seepage law. Throws std::invalid_argument if the scene lacks water or soil or a
+  /// material's seepage law cannot be evaluated (e.g. Kozeny-Carman with zero water viscosity).
+  explicit SoilWaterInteraction(const scene::Scene& scene);
+  ~SoilWaterInteraction();
+  SoilWaterInteraction(const SoilWaterInteraction&) = delete;
+  SoilWaterInteraction& operator=(const SoilWaterInteraction&) = delete;
+
+  /// Evaluates the interaction between the water and soil overlap sets of one step at simulated
+  /// time `time`. While time < soil.damping_duration only the saturation is computed (the soil
+  /// settles under its submerged weight) and the accelerations are left empty. When either set is
+  /// empty every output is empty. Throws std::runtime_error naming the phase if an overlap array
+  /// has the wrong size or a soil material index is out of range.
+  InteractionSummary compute(const coupling::StepState& water, const coupling::StepState& soil,
+                             double time);
+
+  /// The results of the last compute (see InteractionOutputs); the vectors are reused.
+  const InteractionOutputs& outputs() const { return out_; }
+  const std::vector<double>& water_acceleration() const { return out_.water_acceleration; }
+  const std::vector<double>& soil_acceleration() const { return out_.soil_acceleration; }
+  const std::vector<double>& saturation() const { return out_.saturation; }
+
+ private:
+  void check_sizes(const coupling::StepState& state, const char* phase, bool soil) const;
+
+  std::unique_ptr<InteractionEngine> engine_;
+  int dimension_ = 2;
+  double damping_duration_ = 0.0;
+  std::size_t material_count_ = 0;
+  InteractionOutputs out_;
+};
+
+}  // namespace porosph::coupler

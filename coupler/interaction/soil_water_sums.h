@@ -1,0 +1,222 @@
+// The pair sums of the soil-water interaction (the formulas are in soil_water_interaction.h),
+// for one dimension and kernel. One distance pass: each water overlap particle scans the soil cell
+// list (cross_neighbours.h) and sums its own acceleration; the soil side of each pair (the force
+// sum F_i = sum_a V_a f_ia W_ia and the saturation s_i = sum_a V_a W_ia) goes into a per-thread
+// buffer, reduced per soil particle afterwards, where a_i = F_i / rho_i^s once s_i is known.
+// Static OpenMP scheduling: the result does not depend on timing (only on the thread count).
+// Every buffer is reused: no allocation in steady state.
+#pragma once
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "coupler/interaction/cross_neighbours.h"
+#include "coupler/interaction/seepage_force.h"
+#include "coupler/interaction/soil_water_interaction.h"
+#include "coupler/interaction/submerged_density.h"
+#include "proto/coupling_client.h"
+#include "sph/domain_box.h"
+#include "sph/vector.h"
+
+namespace porosph::coupler {
+
+/// Per soil material: its seepage law, r_m of the submerged density and whether it is a fixed bed.
+struct SoilMaterialTerms {
+  SeepageLaw law;
+  double submerged_ratio = 1.0;
+  bool fixed = false;
+};
+
+struct InteractionParameters {
+  double h = 0.0;
+  double c_a = 0.25;                  ///< eq. 21
+  double unit_weight_water = 0.0;     ///< gamma_w = rho0_w |g| [N/m^3]
+  double submerged_saturation = 0.8;  ///< coupling.submerged_saturation
+  std::vector<SoilMaterialTerms> materials;
+};
+
+class InteractionEngine {
+ public:
+  virtual ~InteractionEngine() = default;
+  /// The sums for sets whose sizes the caller checked (both non-empty); `forces` false: the
+  /// saturation only.
+  virtual InteractionSummary compute(const coupling::StepState& water,
+                                     const coupling::StepState& soil, bool forces,
+                                     InteractionOutputs& out) = 0;
+};
+
+template <int D, class Kernel>
+class SoilWaterSums final : public InteractionEngine {
+ public:
+  using Vec = sph::Vec<D>;
+  /// Below this many particles a loop runs on one thread: a parallel region costs a few
+  /// microseconds, far more on cores shared with the solver processes, and small sets (the first
+  /// contact, the test dummies) do not need it.
+  static constexpr std::int64_t kParallelFrom = 2048;
+
+  SoilWaterSums(InteractionParameters parameters, const sph::DomainBox<D>& box)
+      : p_(std::move(parameters)), kernel_(p_.h), box_(box) {}
+
+  InteractionSummary compute(const coupling::StepState& water, const coupling::StepState& soil,
+                             bool forces, InteractionOutputs& out) override {
+    const std::size_t n_soil = soil.overlap_id.size();
+    grid_.build(soil.overlap_position.data(), n_soil, kernel_.support(), box_);
+    gather_soil(soil, forces);
+    InteractionSummary summary;
+    summary.evaluated = true;
+    summary.forces = forces;
+    double max_a2 = 0.0;
+    summary.pair_count = water_pass(water, forces, out, max_a2);
+    soil_pass(soil, forces, out, max_a2);
+    summary.max_acceleration = std::sqrt(max_a2);
+    if (forces && summary.max_acceleration > 0.0) {
+      summary.dt_limit = p_.c_a * std::sqrt(p_.h / summary.max_acceleration);
+    }
+    return summary;
+  }
+
+ private:
+  /// Copies what the pair loop needs of each soil particle into cell order (slots).
+  void gather_soil(const coupling::StepState& soil, bool forces) {
+    const std::size_t n = grid_.size();
+    const std::vector<std::int32_t>& order = grid_.order();
+    slot_velocity_.resize(n);
+    slot_volume_.resize(n);
+    slot_a_.resize(n);
+    slot_b_.resize(n);
+    slot_active_.resize(n);
+    const std::int64_t count = static_cast<std::int64_t>(n);
+#pragma omp parallel for schedule(static) if (count >= kParallelFrom)
+    for (std::int64_t s = 0; s < count; ++s) {
+      const std::size_t i = static_cast<std::size_t>(order[s]);
+      slot_velocity_[s] = Eigen::Map<const Vec>(soil.overlap_velocity.data() + i * D);
+      slot_volume_[s] = soil.overlap_mass[i] / soil.overlap_density[i];
+      const SeepageLaw& law = p_.materials[soil.overlap_material[i]].law;
+      slot_active_[s] = forces && law.active();
+      const soil::SeepageCoefficients c = slot_active_[s]
+                                              ? law.coefficients(soil.overlap_porosity[i])
+                                              : soil::SeepageCoefficients{};
+      slot_a_[s] = p_.unit_weight_water * c.a;
+      slot_b_[s] = p_.unit_weight_water * c.b;
+    }
+  }
+
+  /// Water accelerations, the soil partial sums per thread and the force on the water. Returns
+  /// the number of pairs.
+  std::size_t water_pass(const coupling::StepState& water, bool forces, InteractionOutputs& out,
+                         double& max_a2) {
+    constexpr int kStride = D + 1;  // per soil slot: F_i (D components), then s_i
+    const std::int64_t n_water = static_cast<std::int64_t>(water.overlap_id.size());
+    const std::size_t soil_values = grid_.size() * kStride;
+    const int max_threads = omp_get_max_threads();
+    if (static_cast<int>(partial_.size()) < max_threads) partial_.resize(max_threads);
+    if (forces) {
+      out.water_acceleration.resize(water.overlap_id.size() * D);
+    } else {
+      out.water_acceleration.clear();
+    }
+    std::size_t pairs = 0;
+    double force[D] = {}, magnitude = 0.0, a2_max = 0.0;
+    threads_used_ = 1;
+#pragma omp parallel reduction(+ : pairs, force[:D], magnitude) reduction(max : a2_max) \
+    if (n_water >= kParallelFrom)
+    {
+      const int t = omp_get_thread_num();
+#pragma omp single
+      threads_used_ = omp_get_num_threads();
+      std::vector<double>& acc = partial_[t];
+      acc.assign(soil_values, 0.0);
+#pragma omp for schedule(static)
+      for (std::int64_t a = 0; a < n_water; ++a) {
+        const Vec x_a = Eigen::Map<const Vec>(water.overlap_position.data() + a * D);
+        const Vec v_a = Eigen::Map<const Vec>(water.overlap_velocity.data() + a * D);
+        const double rho_a = water.overlap_density[a];
+        const double volume_a = water.overlap_mass[a] / rho_a;
+        Vec sum = Vec::Zero();  // sum_i V_i f_ia W_ia
+        grid_.for_each_within(x_a, [&](std::int32_t s, const Vec&, double r) {
+          const double w = kernel_.w(r);
+          double* soil_sums = acc.data() + static_cast<std::size_t>(s) * kStride;
+          soil_sums[D] += volume_a * w;
+          ++pairs;
+          if (!slot_active_[s]) return;
+          const Vec f = seepage_force<D>(slot_a_[s], slot_b_[s], Vec(v_a - slot_velocity_[s]));
+          for (int k = 0; k < D; ++k) soil_sums[k] += volume_a * w * f[k];
+          sum += (slot_volume_[s] * w) * f;
+        });
+        if (!forces) continue;
+        const Vec acceleration = -sum / rho_a;
+        for (int k = 0; k < D; ++k) {
+          out.water_acceleration[a * D + k] = acceleration[k];
+          force[k] += water.overlap_mass[a] * acceleration[k];
+        }
+        magnitude += water.overlap_mass[a] * acceleration.norm();
+        a2_max = std::max(a2_max, acceleration.squaredNorm());
+      }
+    }
+    out.force_on_water.assign(force, force + D);
+    out.force_magnitude_sum = magnitude;
+    max_a2 = std::max(max_a2, a2_max);
+    return pairs;
+  }
+
+  /// Reduces the per-thread soil sums: saturation, rho^s, soil accelerations, force on the soil.
+  void soil_pass(const coupling::StepState& soil, bool forces, InteractionOutputs& out,
+                 double& max_a2) {
+    constexpr int kStride = D + 1;
+    const std::int64_t n = static_cast<std::int64_t>(grid_.size());
+    const std::vector<std::int32_t>& order = grid_.order();
+    out.saturation.resize(n);
+    if (forces) {
+      out.soil_acceleration.resize(n * D);
+    } else {
+      out.soil_acceleration.clear();
+    }
+    const int threads = threads_used_;
+    double force[D] = {}, magnitude = 0.0, a2_max = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : force[:D], magnitude) \
+    reduction(max : a2_max) if (n >= kParallelFrom)
+    for (std::int64_t s = 0; s < n; ++s) {
+      double sums[kStride] = {};
+      for (int t = 0; t < threads; ++t) {
+        const double* part = partial_[t].data() + s * kStride;
+        for (int k = 0; k < kStride; ++k) sums[k] += part[k];
+      }
+      const std::size_t i = static_cast<std::size_t>(order[s]);
+      out.saturation[i] = sums[D];
+      if (!forces) continue;
+      const SoilMaterialTerms& material = p_.materials[soil.overlap_material[i]];
+      const double rho = soil.overlap_density[i];
+      const double rho_s =
+          submerged_density(rho, sums[D], p_.submerged_saturation, material.submerged_ratio);
+      const double effective_mass = soil.overlap_mass[i] * rho_s / rho;  // m_i^s
+      Vec acceleration;
+      for (int k = 0; k < D; ++k) acceleration[k] = sums[k] / rho_s;
+      for (int k = 0; k < D; ++k) {
+        out.soil_acceleration[i * D + k] = acceleration[k];
+        force[k] += effective_mass * acceleration[k];
+      }
+      magnitude += effective_mass * acceleration.norm();
+      if (!material.fixed) a2_max = std::max(a2_max, acceleration.squaredNorm());
+    }
+    out.force_on_soil.assign(force, force + D);
+    out.force_magnitude_sum += magnitude;
+    max_a2 = std::max(max_a2, a2_max);
+  }
+
+  InteractionParameters p_;
+  Kernel kernel_;
+  sph::DomainBox<D> box_;
+  CrossNeighbours<D> grid_;
+  std::vector<Vec> slot_velocity_;
+  std::vector<double> slot_volume_, slot_a_, slot_b_;
+  std::vector<unsigned char> slot_active_;
+  std::vector<std::vector<double>> partial_;  ///< per thread: (F_i, s_i) per soil slot
+  int threads_used_ = 1;
+};
+
+}  // namespace porosph::coupler

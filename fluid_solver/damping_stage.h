@@ -1,0 +1,40 @@
+// The soil's initial damping (dynamic relaxation) stage seen from the water (CASES.md,
+// "Conventions"): while t < t_d (soil.damping_duration) the free water is frozen - a step that
+// starts before t_d does not integrate the water at all, so positions, velocities and densities
+// keep their values (no density filter either), and inflow speeds are 0 (flow_zones.h). The first
+// step that starts at t >= t_d zeroes every water velocity once (v and v^{n-1}) and is an Euler
+// step: with v^{n-1} = v^n = 0 a Verlet step would give v^{n+1} = 2 dt a.
+#pragma once
+
+#include "scene/scene.h"
+
+namespace porosph::fluid {
+
+class DampingStage {
+ public:
+  DampingStage() = default;
+  /// duration <= 0: no stage.
+  explicit DampingStage(double duration) : duration_(duration > 0.0 ? duration : 0.0) {}
+  /// soil.damping_duration when the scene has soil, else no stage.
+  static DampingStage from_scene(const scene::Scene& s) {
+    return DampingStage(s.soil ? s.soil->damping_duration : 0.0);
+  }
+
+  /// End of the stage t_d [s] (0: none).
+  double duration() const { return duration_; }
+  /// True if a step starting at `time` must leave the water as it is.
+  bool frozen(double time) const { return time < duration_; }
+  /// True exactly once, for the first step starting at time >= t_d (never without a stage): the
+  /// caller then zeroes the water velocities and takes an Euler step.
+  bool release(double time) {
+    if (released_ || duration_ <= 0.0 || time < duration_) return false;
+    released_ = true;
+    return true;
+  }
+
+ private:
+  double duration_ = 0.0;
+  bool released_ = false;
+};
+
+}  // namespace porosph::fluid

@@ -1,0 +1,119 @@
+// Water inflow and outflow zones (scene [[water.inflow]], [[water.outflow]]; DESIGN.md section 3,
+// "Boundaries").
+//
+// Inflow zone: a box whose water particles ("zone particles", FluidParticles::zone = the zone's
+// index) follow the prescribed velocity u(t) = speed(t) e instead of their equation of motion
+// (e: the unit direction, along one axis). They stay in the free range, so they interact with
+// everything, and their density follows the continuity equation as usual: the zone pushes the
+// water downstream through the pressure. Their accelerations (internal and interaction) are not
+// used, nor counted in the eq. 21 limit (fluid_rates.cpp). Over a step [t, t + dt] a zone particle
+// does
+//   x += dt u(t + dt/2)                    (the exact integral of u for the linear ramp)
+//   v^{n-1} = u(t),  v^{n+1} = u(t + dt)   (the two Verlet levels a free particle needs)
+// A zone particle past the downstream face (the face along e) becomes a free particle with these
+// velocities, and a new zone particle is born at x - L e with the crossing particle's density,
+// pressure, mass m = rho dp^D and a fresh id. L = N dp, N the number of lattice rows of the zone
+// along e (the zone's length when that is a multiple of dp), so the zone keeps its lattice and
+// emits one row of mass rho dp^D per column every dp / speed: a mass flux rho speed A, A the
+// zone's cross-section (columns x dp^(D-1)). Requires speed dt < L (always true under the CFL
+// limit). Zones must not straddle a periodic face.
+//
+// Outflow zone: free water particles inside the box [min, max] are removed (zone particles never
+// are). Inflow speeds are 0 during the damping stage (t < hold_until, damping_stage.h), whatever
+// the ramp says.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "fluid_solver/fluid_particles.h"
+#include "scene/scene.h"
+#include "sph/vector.h"
+
+namespace porosph::fluid {
+
+template <int D>
+class FlowZones {
+ public:
+  using Vec = sph::Vec<D>;
+
+  FlowZones() = default;
+  /// From water.inflows / water.outflows; dp is the lattice spacing; hold_until the end of the
+  /// damping stage (0: none). Throws std::invalid_argument on vectors of the wrong length, an
+  /// empty box, or a direction that is not a unit vector along one axis.
+  FlowZones(const scene::WaterPhase& water, double dp, double hold_until);
+
+  std::size_t inflow_count() const { return inflows_.size(); }
+  bool has_outflows() const { return !outflows_.empty(); }
+
+  /// The box of inflow zone z as a shape, to fill with the water lattice at t = 0.
+  scene::Shape inflow_box(int z) const;
+  /// Index of the inflow zone whose closed box holds x, or -1.
+  int inflow_at(const Vec& x) const {
+    for (std::size_t z = 0; z < inflows_.size(); ++z)
+      if (inside(inflows_[z].box, x)) return static_cast<int>(z);
+    return -1;
+  }
+  /// True if x lies in the closed box of an outflow zone.
+  bool in_outflow(const Vec& x) const {
+    for (const Box& b : outflows_)
+      if (inside(b, x)) return true;
+    return false;
+  }
+
+  /// Prescribed speed of zone z at `time`: 0 before hold_until, else the scene's ramp.
+  double speed(int z, double time) const;
+  /// Prescribed velocity speed(z, time) e of zone z.
+  Vec velocity(int z, double time) const { return speed(z, time) * inflows_[z].direction; }
+
+  /// Prepares the velocities of every zone for the step [time, time + dt] (no allocation).
+  void begin_step(double time, double dt);
+  /// Moves a particle of zone z over the prepared step (see above); returns 1 if it is now past
+  /// the zone's downstream face, else 0.
+  int move(int z, Vec& x, Vec& v, Vec& v_previous, double dt) const {
+    x += dt * step_[z].middle;
+    v_previous = step_[z].start;
+    v = step_[z].end;
+    return past_downstream(z, x) ? 1 : 0;
+  }
+  /// Turns every zone particle past its downstream face into a free particle and inserts its
+  /// replacement (fresh ids from next_id, which advances) into the free range. volume = dp^D.
+  /// Returns the number of particles born. Allocates only when P must grow beyond its capacity
+  /// (it then reserves one zone-load ahead).
+  std::size_t renew(FluidParticles<D>& P, double volume, std::int64_t& next_id);
+
+ private:
+  struct Box {
+    Vec min, max;
+  };
+  struct Inflow {
+    Box box;
+    Vec direction;              ///< unit, along `axis`
+    int axis = 0;               ///< the flow axis
+    double downstream = 0.0;    ///< coordinate of the downstream face along `axis`
+    double lattice_length = 0;  ///< L = N dp
+    scene::InflowZone ramp;     ///< speed_at(t)
+  };
+  struct StepVelocities {
+    Vec start, middle, end;  ///< u(t), u(t + dt/2), u(t + dt)
+  };
+
+  static bool inside(const Box& b, const Vec& x) {
+    return (x.array() >= b.min.array()).all() && (x.array() <= b.max.array()).all();
+  }
+  bool past_downstream(int z, const Vec& x) const {
+    const Inflow& f = inflows_[z];
+    return f.direction[f.axis] * (x[f.axis] - f.downstream) > 0.0;
+  }
+
+  std::vector<Inflow> inflows_;
+  std::vector<Box> outflows_;
+  double hold_until_ = 0.0;
+  std::vector<StepVelocities> step_;
+  FluidParticles<D> born_;  ///< staging of the particles born in renew()
+};
+
+extern template class FlowZones<2>;
+extern template class FlowZones<3>;
+
+}  // namespace porosph::fluid

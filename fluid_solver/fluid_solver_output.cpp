@@ -1,0 +1,73 @@
+// FluidSolver's read-only reports: the non-finite check and the snapshot fields.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "fluid_solver/fluid_solver.h"
+
+namespace porosph::fluid {
+
+template <int D>
+std::optional<std::string> FluidSolver<D>::find_non_finite(std::int64_t* particle_id) const {
+  const FluidParticles<D>& P = particles_;
+  const std::int64_t n = static_cast<std::int64_t>(P.size());
+  std::int64_t first = n;
+#pragma omp parallel for schedule(static) reduction(min : first)
+  for (std::int64_t a = 0; a < n; ++a) {
+    if (!P.position[a].allFinite() || !P.velocity[a].allFinite() || !std::isfinite(P.density[a]))
+      first = std::min(first, a);
+  }
+  if (first == n) return std::nullopt;
+  const char* what = !P.position[first].allFinite()   ? "position"
+                     : !P.velocity[first].allFinite() ? "velocity"
+                                                      : "density";
+  std::ostringstream msg;
+  msg << "non-finite " << what << " of " << (P.fixed[first] ? "wall" : "water") << " particle "
+      << P.id[first] << " (x = ";
+  for (int k = 0; k < D; ++k) msg << (k ? ", " : "") << P.position[first][k];
+  msg << "; v = ";
+  for (int k = 0; k < D; ++k) msg << (k ? ", " : "") << P.velocity[first][k];
+  msg << "; rho = " << P.density[first] << ") at step " << step_ << ", t = " << time_ << " s";
+  if (particle_id != nullptr) *particle_id = P.id[first];
+  return msg.str();
+}
+
+template <int D>
+std::vector<io::FieldView> FluidSolver<D>::snapshot_fields() const {
+  const FluidParticles<D>& P = particles_;
+  const std::size_t n = P.size();
+  auto f64 = [n](const char* name, std::size_t cols, const double* data) {
+    io::FieldView f;
+    f.name = name;
+    f.rows = n;
+    f.cols = cols;
+    f.f64 = data;
+    f.type = io::FieldType::F64;
+    return f;
+  };
+  std::vector<io::FieldView> fields;
+  fields.push_back(f64("position", D, n ? P.position[0].data() : nullptr));
+  fields.push_back(f64("velocity", D, n ? P.velocity[0].data() : nullptr));
+  fields.push_back(f64("density", 1, P.density.data()));
+  fields.push_back(f64("pressure", 1, P.pressure.data()));
+  io::FieldView id;
+  id.name = "id";
+  id.rows = n;
+  id.i64 = P.id.data();
+  id.type = io::FieldType::I64;
+  fields.push_back(id);
+  io::FieldView fixed;
+  fixed.name = "fixed";
+  fixed.rows = n;
+  fixed.u8 = P.fixed.data();
+  fixed.type = io::FieldType::U8;
+  fields.push_back(fixed);
+  return fields;
+}
+
+template std::optional<std::string> FluidSolver<2>::find_non_finite(std::int64_t*) const;
+template std::optional<std::string> FluidSolver<3>::find_non_finite(std::int64_t*) const;
+template std::vector<io::FieldView> FluidSolver<2>::snapshot_fields() const;
+template std::vector<io::FieldView> FluidSolver<3>::snapshot_fields() const;
+
+}  // namespace porosph::fluid

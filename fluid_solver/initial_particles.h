@@ -1,0 +1,29 @@
+// The water solver's particles at t = 0, from the scene's water blocks, inflow zones and walls.
+#pragma once
+
+#include "fluid_solver/flow_zones.h"
+#include "fluid_solver/fluid_params.h"
+#include "fluid_solver/fluid_particles.h"
+#include "scene/scene.h"
+#include "sph/domain_box.h"
+
+namespace porosph::fluid {
+
+template <int D>
+struct InitialParticles {
+  FluidParticles<D> particles;
+  double next_wall_removal = -1.0;  ///< earliest wall removal time [s] (< 0: none)
+};
+
+/// Water from scene.water.blocks (lattice points inside a wall acting on water or inside an inflow
+/// zone skipped, points outside the domain or beyond a periodic face dropped), then the lattice of
+/// every inflow zone (zone particles, filled like a block, velocity zones.velocity(z, 0)), then the
+/// wall particles of the walls acting on water (points beyond a periodic axis' range dropped).
+/// Densities: hydrostatic over all the water, zones included (hydrostatic_initial.h), when
+/// params.hydrostatic_initial, else rho0; masses m = rho(t=0) dp^D; ids 0..n-1. The arrays are
+/// reserved one zone-load ahead for the particles the zones will emit.
+template <int D>
+InitialParticles<D> initial_particles(const scene::Scene& s, const FluidParams<D>& params,
+                                      const sph::DomainBox<D>& box, const FlowZones<D>& zones);
+
+}  // namespace porosph::fluid

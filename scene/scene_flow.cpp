@@ -1,0 +1,165 @@
+// Water inflow / outflow zones ([[water.inflow]], [[water.outflow]]) and the soil-water coupling
+// settings ([coupling]): their schema, the relations between their keys, and their typed form.
+#include <cmath>
+
+#include "scene/scene_internal.h"
+#include "scene/scene_schema_builder.h"
+
+namespace porosph::scene {
+namespace schema_detail {
+
+void add_flow_zones(SceneSchema& s) {
+  s.tables.push_back({"water.inflow[]", true, false,
+                      "Inflow zones: a box whose water particles move with a prescribed velocity "
+                      "along `direction`; a particle leaving the box downstream becomes free and a "
+                      "new one enters at its upstream end. Give `velocity`, or `flow_rate` with "
+                      "`cross_section`."});
+  s.keys.push_back(Key("water.inflow[].min", T::Vector).unit("m").required().doc("Lower corner."));
+  s.keys.push_back(Key("water.inflow[].max", T::Vector)
+                       .unit("m")
+                       .required()
+                       .doc("Upper corner; greater than min in every component."));
+  s.keys.push_back(Key("water.inflow[].direction", T::Vector)
+                       .required()
+                       .doc("Flow direction (normalised by the loader); the zone's upstream end is "
+                            "its face against this direction. Must be along an axis."));
+  s.keys.push_back(Key("water.inflow[].velocity", T::Float)
+                       .unit("m/s")
+                       .optional()
+                       .above(0)
+                       .doc("Prescribed speed once ramped up."));
+  s.keys.push_back(Key("water.inflow[].flow_rate", T::Float)
+                       .unit("m^3/s")
+                       .optional()
+                       .above(0)
+                       .doc("Prescribed flow rate once ramped up; speed = flow_rate / "
+                            "cross_section (the superficial velocity of a 2D model of a 3D rig)."));
+  s.keys.push_back(Key("water.inflow[].cross_section", T::Float)
+                       .unit("m^2")
+                       .optional()
+                       .above(0)
+                       .doc("Area that turns flow_rate into a speed; with flow_rate."));
+  s.keys.push_back(Key("water.inflow[].start_time", T::Float)
+                       .unit("s")
+                       .fallback("0.0")
+                       .at_least(0)
+                       .doc("Time at which the ramp starts (before it: speed 0)."));
+  s.keys.push_back(Key("water.inflow[].ramp_time", T::Float)
+                       .unit("s")
+                       .fallback("0.0")
+                       .at_least(0)
+                       .doc("The speed grows linearly from 0 to its full value over this time; "
+                            "0: a step."));
+
+  s.tables.push_back({"water.outflow[]", true, false,
+                      "Outflow zones: water particles entering the box are removed (counted in "
+                      "run.json and timeseries.csv as removed)."});
+  s.keys.push_back(Key("water.outflow[].min", T::Vector).unit("m").required().doc("Lower corner."));
+  s.keys.push_back(Key("water.outflow[].max", T::Vector)
+                       .unit("m")
+                       .required()
+                       .doc("Upper corner; greater than min in every component."));
+}
+
+void add_coupling(SceneSchema& s) {
+  s.tables.push_back({"coupling", false, false,
+                      "Soil-water interaction settings (used when the scene has both phases)."});
+  s.keys.push_back(Key("coupling.submerged_saturation", T::Float)
+                       .fallback("0.8")
+                       .above(0)
+                       .at_most(1)
+                       .doc("A soil particle whose kernel-weighted water volume fraction "
+                            "sum_a V_a W_ia reaches this value is submerged: its weight and the "
+                            "seepage term use the submerged density (saturated - water); below it "
+                            "the particle keeps its total unit weight."));
+  s.keys.push_back(Key("coupling.wet_saturation", T::Float)
+                       .fallback("0.1")
+                       .above(0)
+                       .at_most(1)
+                       .doc("A soil particle whose water volume fraction reaches this value is wet "
+                            "(materials with wet_cohesion_loss lose their cohesion for good)."));
+}
+
+}  // namespace schema_detail
+
+void check_flow_zones(const toml::table& water, const ShapeChecker& shapes,
+                      const ErrorContext& errors) {
+  if (const toml::array* inflows = water.get_as<toml::array>("inflow")) {
+    for (std::size_t i = 0; i < inflows->size(); ++i) {
+      const toml::table& zone = *inflows->get(i)->as_table();
+      const std::string key = "water.inflow[" + std::to_string(i) + "]";
+      shapes.ordered(zone.get("min"), zone.get("max"), key + ".max", key + ".min");
+      const bool velocity = zone.contains("velocity");
+      const bool flow_rate = zone.contains("flow_rate");
+      const bool section = zone.contains("cross_section");
+      if (velocity == flow_rate)
+        errors.fail(&zone, key, "give either velocity or flow_rate (with cross_section)");
+      if (flow_rate != section)
+        errors.fail(zone.get(flow_rate ? "flow_rate" : "cross_section"),
+                    key + (flow_rate ? ".flow_rate" : ".cross_section"),
+                    "flow_rate and cross_section go together");
+      const std::vector<double> d = vector_of(zone.get("direction"));
+      int nonzero = 0;
+      for (double c : d) nonzero += c != 0.0;
+      if (nonzero != 1)
+        errors.fail(zone.get("direction"), key + ".direction",
+                    "must point along one axis, e.g. [0.0, 1.0]");
+    }
+  }
+  if (const toml::array* outflows = water.get_as<toml::array>("outflow")) {
+    for (std::size_t i = 0; i < outflows->size(); ++i) {
+      const toml::table& zone = *outflows->get(i)->as_table();
+      const std::string key = "water.outflow[" + std::to_string(i) + "]";
+      shapes.ordered(zone.get("min"), zone.get("max"), key + ".max", key + ".min");
+    }
+  }
+}
+
+void build_flow_zones(const toml::table& water, WaterPhase& w) {
+  if (const toml::array* inflows = water.get_as<toml::array>("inflow")) {
+    for (const auto& element : *inflows) {
+      const toml::table& t = *element.as_table();
+      InflowZone z;
+      z.min = vector_of(t.get("min"));
+      z.max = vector_of(t.get("max"));
+      z.direction = vector_of(t.get("direction"));
+      double norm = 0.0;
+      for (double c : z.direction) norm += c * c;
+      for (double& c : z.direction) c /= std::sqrt(norm);
+      if (const auto v = t["velocity"].value<double>()) {
+        z.speed = *v;
+      } else {
+        z.speed = *t["flow_rate"].value<double>() / *t["cross_section"].value<double>();
+      }
+      z.start_time = *t["start_time"].value<double>();
+      z.ramp_time = *t["ramp_time"].value<double>();
+      w.inflows.push_back(std::move(z));
+    }
+  }
+  if (const toml::array* outflows = water.get_as<toml::array>("outflow")) {
+    for (const auto& element : *outflows) {
+      const toml::table& t = *element.as_table();
+      OutflowZone z;
+      z.min = vector_of(t.get("min"));
+      z.max = vector_of(t.get("max"));
+      w.outflows.push_back(std::move(z));
+    }
+  }
+}
+
+CouplingSettings build_coupling(const toml::table& root) {
+  CouplingSettings c;
+  if (const toml::table* t = root.get_as<toml::table>("coupling")) {
+    c.submerged_saturation = *(*t)["submerged_saturation"].value<double>();
+    c.wet_saturation = *(*t)["wet_saturation"].value<double>();
+  }
+  return c;
+}
+
+double InflowZone::speed_at(double time) const {
+  if (time < start_time) return 0.0;
+  if (ramp_time <= 0.0 || time >= start_time + ramp_time) return speed;
+  return speed * (time - start_time) / ramp_time;
+}
+
+}  // namespace porosph::scene

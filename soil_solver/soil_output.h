@@ -1,0 +1,164 @@
+// What the soil solver reports: the overlap set and diagnostics sent to the coupler each step, the
+// non-finite check, and the snapshot fields of soil.h5 (DESIGN.md section 6).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "io/snapshot_writer.h"
+#include "proto/coupling_client.h"
+#include "soil_solver/soil_particles.h"
+
+namespace porosph::soil {
+
+/// The soil particles (free and fixed soil, not walls) inside [lo, hi] (empty bounds: none): their
+/// indices into `index` and their id, position, velocity, density, mass, porosity and material
+/// into `out`.
+template <int D>
+void fill_soil_overlap(const SoilParticles<D>& P, const std::vector<double>& lo,
+                       const std::vector<double>& hi, std::vector<std::int32_t>& index,
+                       coupling::StepState& out) {
+  index.clear();
+  out.overlap_id.clear();
+  out.overlap_position.clear();
+  out.overlap_velocity.clear();
+  out.overlap_density.clear();
+  out.overlap_mass.clear();
+  out.overlap_porosity.clear();
+  out.overlap_material.clear();
+  if (lo.size() != D || hi.size() != D) return;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.material[i] < 0) continue;  // walls; fixed soil (a porous bed) does exchange drag
+    const sph::Vec<D>& x = P.position[i];
+    bool inside = true;
+    for (int k = 0; k < D; ++k) inside = inside && x[k] >= lo[k] && x[k] <= hi[k];
+    if (!inside) continue;
+    index.push_back(static_cast<std::int32_t>(i));
+    out.overlap_id.push_back(P.id[i]);
+    for (int k = 0; k < D; ++k) out.overlap_position.push_back(x[k]);
+    for (int k = 0; k < D; ++k) out.overlap_velocity.push_back(P.velocity[i][k]);
+    out.overlap_density.push_back(P.density[i]);
+    out.overlap_mass.push_back(P.mass[i]);
+    out.overlap_porosity.push_back(P.porosity[i]);
+    out.overlap_material.push_back(static_cast<std::int32_t>(P.material[i]));
+  }
+}
+
+/// Mass, momentum, kinetic energy and max speed of the free soil (one parallel pass) and the
+/// bounding box of the soil that interacts with water, fixed soil included (+inf / -inf: none).
+template <int D>
+void fill_soil_diagnostics(const SoilParticles<D>& P, std::vector<double>& region_min,
+                           std::vector<double>& region_max, coupling::Diagnostics& d) {
+  const std::int64_t n = static_cast<std::int64_t>(P.n_free);
+  double mass = 0.0, energy = 0.0, max_v2 = 0.0;
+  double momentum[D] = {}, lo[D], hi[D];
+  std::fill(lo, lo + D, std::numeric_limits<double>::infinity());
+  std::fill(hi, hi + D, -std::numeric_limits<double>::infinity());
+#pragma omp parallel for schedule(static) reduction(+ : mass, energy, momentum[:D]) \
+    reduction(max : max_v2, hi[:D]) reduction(min : lo[:D])
+  for (std::int64_t i = 0; i < n; ++i) {
+    const double v2 = P.velocity[i].squaredNorm();
+    mass += P.mass[i];
+    energy += 0.5 * P.mass[i] * v2;
+    max_v2 = std::max(max_v2, v2);
+    for (int k = 0; k < D; ++k) {
+      momentum[k] += P.mass[i] * P.velocity[i][k];
+      lo[k] = std::min(lo[k], P.position[i][k]);
+      hi[k] = std::max(hi[k], P.position[i][k]);
+    }
+  }
+  for (std::size_t i = P.n_free; i < P.size(); ++i) {  // fixed soil interacts with water too
+    if (P.material[i] < 0) continue;
+    for (int k = 0; k < D; ++k) {
+      lo[k] = std::min(lo[k], P.position[i][k]);
+      hi[k] = std::max(hi[k], P.position[i][k]);
+    }
+  }
+  region_min.assign(lo, lo + D);
+  region_max.assign(hi, hi + D);
+  d.particle_count = P.size();
+  d.free_count = P.n_free;
+  d.mass = mass;
+  d.kinetic_energy = energy;
+  d.max_speed = std::sqrt(max_v2);
+  d.momentum.assign(momentum, momentum + D);
+}
+
+/// "non-finite stress of soil particle 12 (x = ...) at step 3, t = ... s" for the first particle
+/// with a non-finite position, velocity, density or stress; std::nullopt if there is none.
+template <int D>
+std::optional<std::string> find_non_finite_soil(const SoilParticles<D>& P, std::uint64_t step,
+                                                double time, std::int64_t* particle_id) {
+  const std::int64_t n = static_cast<std::int64_t>(P.size());
+  std::int64_t first = n;
+#pragma omp parallel for schedule(static) reduction(min : first)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (!P.position[i].allFinite() || !P.velocity[i].allFinite() || !std::isfinite(P.density[i]) ||
+        !P.stress[i].allFinite())
+      first = std::min(first, i);
+  }
+  if (first == n) return std::nullopt;
+  const char* what = !P.position[first].allFinite()     ? "position"
+                     : !P.velocity[first].allFinite()   ? "velocity"
+                     : !std::isfinite(P.density[first]) ? "density"
+                                                        : "stress";
+  std::ostringstream msg;
+  msg << "non-finite " << what << " of " << (P.fixed[first] ? "fixed" : "soil") << " particle "
+      << P.id[first] << " (x = ";
+  for (int k = 0; k < D; ++k) msg << (k ? ", " : "") << P.position[first][k];
+  msg << "; v = ";
+  for (int k = 0; k < D; ++k) msg << (k ? ", " : "") << P.velocity[first][k];
+  msg << "; rho = " << P.density[first] << ") at step " << step << ", t = " << time << " s";
+  if (particle_id != nullptr) *particle_id = P.id[first];
+  return msg.str();
+}
+
+/// Views of the soil.h5 fields of every particle (fixed ones included).
+template <int D>
+std::vector<io::FieldView> soil_snapshot_fields(const SoilParticles<D>& P) {
+  const std::size_t n = P.size();
+  auto f64 = [n](const char* name, std::size_t cols, const double* data) {
+    io::FieldView f;
+    f.name = name;
+    f.rows = n;
+    f.cols = cols;
+    f.f64 = data;
+    f.type = io::FieldType::F64;
+    return f;
+  };
+  auto i64 = [n](const char* name, const std::int64_t* data) {
+    io::FieldView f;
+    f.name = name;
+    f.rows = n;
+    f.i64 = data;
+    f.type = io::FieldType::I64;
+    return f;
+  };
+  std::vector<io::FieldView> fields;
+  fields.push_back(f64("position", D, n ? P.position[0].data() : nullptr));
+  fields.push_back(f64("velocity", D, n ? P.velocity[0].data() : nullptr));
+  fields.push_back(f64("density", 1, P.density.data()));
+  // A symmetric 3x3 matrix: its column-major storage equals the row-major layout.
+  fields.push_back(f64("stress", 9, n ? P.stress[0].data() : nullptr));
+  fields.push_back(f64("porosity", 1, P.porosity.data()));
+  fields.push_back(f64("plastic_strain", 1, P.plastic_strain.data()));
+  fields.push_back(f64("displacement", D, n ? P.displacement[0].data() : nullptr));
+  fields.push_back(f64("saturation", 1, P.saturation.data()));
+  fields.push_back(i64("id", P.id.data()));
+  fields.push_back(i64("material", P.material.data()));
+  io::FieldView fixed;
+  fixed.name = "fixed";
+  fixed.rows = n;
+  fixed.u8 = P.fixed.data();
+  fixed.type = io::FieldType::U8;
+  fields.push_back(fixed);
+  return fields;
+}
+
+}  // namespace porosph::soil

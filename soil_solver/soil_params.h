@@ -1,0 +1,126 @@
+// Parameters of the soil phase, resolved once from the scene and passed to every term (the solver's
+// context: no globals). Per-material constants sit in `materials`, indexed by a particle's
+// material.
+#pragma once
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+#include "soil_solver/artificial_stress.h"
+#include "soil_solver/elastic_constants.h"
+#include "soil_solver/geostatic_stress.h"
+#include "soil_solver/soil_artificial_viscosity.h"
+#include "soil_solver/soil_material.h"
+#include "sph/vector.h"
+
+namespace porosph::soil {
+
+/// One soil material as the solver uses it.
+struct SoilMaterialConstants {
+  std::string name;
+  Material model;         ///< K, G and the Drucker-Prager constants (eq. 6, 9-12)
+  Material wet_model;     ///< the same without cohesion (wet_cohesion_loss), else = model
+  double density = 0.0;   ///< bulk density at t = 0 (weight when dry) [kg/m^3]
+  double porosity = 0.4;  ///< n0 (eq. 20)
+  double young = 0.0;     ///< E [Pa] (damping coefficient)
+  double k0 = 0.5;        ///< at-rest coefficient of the geostatic initial stress
+  bool artificial_stress = false;
+  bool fixed = false;  ///< rigid porous bed: never moves (held with the wall particles)
+  bool wet_cohesion_loss = false;
+  /// rho^s / rho when submerged: (rho_sat - rho_w) / rho_dry, rho_sat = saturated_density or, when
+  /// not given, rho_dry + n0 rho_w (pores full of water). 1 in a scene without water.
+  double submerged_ratio = 1.0;
+};
+
+template <int D>
+struct SoilParams {
+  double dp = 0.01, h = 0.012, volume = 1e-4;
+  sph::Vec<D> gravity = sph::Vec<D>::Zero();
+  double sound_speed = 0.0;  ///< c_s of the CFL limit and the artificial viscosity [m/s]
+  SoilArtificialViscosity viscosity;
+  ArtificialStressParameters artificial_stress;
+  bool no_slip = true;                ///< default wall condition of the soil phase
+  bool geostatic_initial = false;     ///< initial_stress = "geostatic"
+  double damping_duration = 0.0;      ///< [s]; 0: no damping stage
+  double damping_coefficient = 0.02;  ///< D = coefficient sqrt(E / (rho h^2))
+  double cfl = 0.2, c_a = 0.25;
+  int stress_filter_every = 0;        ///< Shepard stress filter period in steps (0: off)
+  double submerged_saturation = 0.8;  ///< water fraction from which a particle is submerged
+  double wet_saturation = 0.1;        ///< water fraction from which a particle is wet
+  std::vector<SoilMaterialConstants> materials;
+
+  bool any_artificial_stress() const {
+    for (const auto& m : materials)
+      if (m.artificial_stress) return true;
+    return false;
+  }
+
+  /// Throws std::invalid_argument on a scene without soil, a dimension mismatch or a bad material.
+  static SoilParams from_scene(const scene::Scene& s) {
+    if (!s.soil) throw std::invalid_argument("soil solver: the scene has no [soil] phase");
+    if (s.run.dimension != D) {
+      throw std::invalid_argument("soil solver built for D = " + std::to_string(D) +
+                                  " but run.dimension = " + std::to_string(s.run.dimension));
+    }
+    const scene::SoilPhase& soil = *s.soil;
+    SoilParams p;
+    p.dp = s.run.dp;
+    p.h = s.h();
+    p.volume = std::pow(p.dp, D);
+    p.gravity = sph::to_vec<D>(s.run.gravity, "run.gravity");
+    p.sound_speed = soil.effective_sound_speed();
+    p.viscosity = SoilArtificialViscosity{soil.alpha, soil.beta, p.h};
+    p.artificial_stress = {soil.artificial_stress_epsilon, soil.artificial_stress_exponent};
+    if (soil.wall_condition != "no_slip" && soil.wall_condition != "free_slip") {
+      throw std::invalid_argument("soil.wall_condition: expected no_slip or free_slip, got '" +
+                                  soil.wall_condition + "'");
+    }
+    p.no_slip = soil.wall_condition == "no_slip";
+    p.geostatic_initial = soil.initial_stress == "geostatic";
+    p.damping_duration = soil.damping_duration;
+    p.damping_coefficient = soil.damping_coefficient;
+    p.cfl = s.run.cfl;
+    p.c_a = s.run.c_a;
+    p.stress_filter_every = soil.stress_filter_every;
+    p.submerged_saturation = s.coupling.submerged_saturation;
+    p.wet_saturation = s.coupling.wet_saturation;
+    const double rho_water = s.water ? s.water->rho0 : 0.0;
+    for (const scene::SoilMaterial& m : soil.materials) {
+      SoilMaterialConstants c;
+      c.name = m.name;
+      MaterialParameters mp;
+      mp.young = m.young_modulus;
+      mp.poisson = m.poisson_ratio;
+      mp.friction_angle_deg = m.friction_angle_deg;
+      mp.cohesion = m.cohesion;
+      mp.dilatancy_angle_deg = m.dilatancy_angle_deg;
+      try {
+        c.model = make_material(mp);
+        mp.cohesion = 0.0;
+        c.wet_model = m.wet_cohesion_loss ? make_material(mp) : c.model;
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument("soil material '" + m.name + "': " + e.what());
+      }
+      c.density = m.density;
+      c.porosity = m.porosity;
+      c.young = m.young_modulus;
+      c.k0 = soil.k0 == "elastic" ? k0_elastic(m.poisson_ratio)
+                                  : k0_jaky(degrees_to_radians(m.friction_angle_deg));
+      c.artificial_stress = m.artificial_stress;
+      c.fixed = m.fixed;
+      c.wet_cohesion_loss = m.wet_cohesion_loss;
+      if (rho_water > 0.0) {
+        const double saturated =
+            m.saturated_density > 0.0 ? m.saturated_density : m.density + m.porosity * rho_water;
+        c.submerged_ratio = (saturated - rho_water) / m.density;
+      }
+      p.materials.push_back(c);
+    }
+    return p;
+  }
+};
+
+}  // namespace porosph::soil

@@ -1,0 +1,99 @@
+// Particles of the soil solver, structure of arrays. Indices [0, n_free) are free soil particles,
+// [n_free, size()) fixed particles: wall particles (material -1) and fixed soil (a rigid porous
+// bed, material >= 0). Ids are stable across removal and re-ordering.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "sph/vector.h"
+
+namespace porosph::soil {
+
+template <int D>
+struct SoilParticles {
+  using Vec = sph::Vec<D>;
+  using Tensor = Eigen::Matrix3d;
+  std::size_t n_free = 0;
+
+  std::vector<Vec> position, velocity;
+  std::vector<Vec> acceleration;   ///< internal dv/dt of this step (incl. gravity)
+  std::vector<Vec> interaction;    ///< acceleration added by the coupler (last step)
+  std::vector<Vec> wall_velocity;  ///< fixed: velocity seen by the viscous terms (mirrored)
+  std::vector<Vec> displacement;   ///< integral of v dt since t = 0 (periodic-safe)
+  std::vector<Vec>
+      wall_normal;             ///< fixed: geometric normal (wall_normals.h; 0 corner, NaN unknown)
+  std::vector<Tensor> stress;  ///< sigma, tension positive, plane strain in 2D [Pa]
+  std::vector<Tensor> velocity_gradient;  ///< L = dv/dx of this step (eq. 7-8), 3x3 embedded
+  std::vector<Tensor> artificial_stress;  ///< R of Gray et al. 2001 (zero when off)
+  std::vector<double> density, density_rate, reference_density, mass;
+  std::vector<double> porosity;        ///< eq. 20, from the density
+  std::vector<double> plastic_strain;  ///< accumulated plastic multiplier lambda [-]
+  std::vector<double> saturation;      ///< water volume fraction around it (coupler; 0 when far)
+  std::vector<double> weight_ratio;    ///< rho^s / rho: submerged_ratio when submerged, else 1
+  std::vector<double> remove_at;       ///< walls: removal time [s] (< 0: never)
+  std::vector<std::int64_t> id;
+  std::vector<std::int64_t> material;  ///< index into SoilParams::materials; -1 for walls
+  std::vector<std::uint8_t> fixed;     ///< 1 for fixed particles (snapshot field "fixed")
+  std::vector<std::uint8_t> no_slip;   ///< fixed: 1 no-slip, 0 free-slip
+  std::vector<std::uint8_t> wet;       ///< has touched water (sticky; wet_cohesion_loss)
+
+  std::size_t size() const { return position.size(); }
+
+  /// Calls fn(array) on every per-particle array (to resize, permute or compact them together).
+  template <class Fn>
+  void for_each_array(Fn&& fn) {
+    fn(position), fn(velocity), fn(acceleration), fn(interaction), fn(wall_velocity);
+    fn(displacement), fn(wall_normal), fn(stress), fn(velocity_gradient), fn(artificial_stress),
+        fn(density);
+    fn(density_rate), fn(reference_density), fn(mass), fn(porosity), fn(plastic_strain);
+    fn(saturation), fn(weight_ratio), fn(wet);
+    fn(remove_at), fn(id), fn(material), fn(fixed), fn(no_slip);
+  }
+
+  /// Keeps the particles with keep[i] != 0, in order; n_free follows. Returns the number removed.
+  std::size_t compact(const std::vector<std::uint8_t>& keep) {
+    std::size_t kept_free = 0;
+    for (std::size_t i = 0; i < n_free; ++i) kept_free += keep[i] != 0;
+    const std::size_t n = size();
+    for_each_array([&](auto& array) {
+      std::size_t w = 0;
+      for (std::size_t r = 0; r < n; ++r)
+        if (keep[r]) array[w++] = array[r];
+      array.resize(w);
+    });
+    n_free = kept_free;
+    return n - size();
+  }
+
+  /// Re-orders every array: new[i] = old[order[i]]; `order` must keep free before fixed.
+  /// Uses one scratch buffer per element type (no allocation once they have grown).
+  void permute(const std::vector<std::int32_t>& order) {
+    for_each_array([&](auto& array) { permute_array(array, order); });
+  }
+
+ private:
+  template <class T, class Alloc>
+  void permute_array(std::vector<T, Alloc>& array, const std::vector<std::int32_t>& order) {
+    std::vector<T, Alloc>& scratch = scratch_for(static_cast<T*>(nullptr));
+    scratch.resize(order.size());
+    const std::int64_t n = static_cast<std::int64_t>(order.size());
+#pragma omp parallel for schedule(static)
+    for (std::int64_t i = 0; i < n; ++i) scratch[i] = array[order[i]];
+    array.swap(scratch);
+  }
+  std::vector<Vec>& scratch_for(Vec*) { return scratch_vec_; }
+  std::vector<Tensor>& scratch_for(Tensor*) { return scratch_tensor_; }
+  std::vector<double>& scratch_for(double*) { return scratch_f64_; }
+  std::vector<std::int64_t>& scratch_for(std::int64_t*) { return scratch_i64_; }
+  std::vector<std::uint8_t>& scratch_for(std::uint8_t*) { return scratch_u8_; }
+
+  std::vector<Vec> scratch_vec_;
+  std::vector<Tensor> scratch_tensor_;
+  std::vector<double> scratch_f64_;
+  std::vector<std::int64_t> scratch_i64_;
+  std::vector<std::uint8_t> scratch_u8_;
+};
+
+}  // namespace porosph::soil

@@ -1,0 +1,136 @@
+#include "soil_solver/soil_rates.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "soil_solver/artificial_stress.h"
+#include "soil_solver/soil_artificial_viscosity.h"
+#include "soil_solver/stress_divergence.h"
+#include "soil_solver/velocity_gradient.h"
+#include "sph/kernels.h"
+
+namespace porosph::soil {
+namespace {
+
+template <int D, class Kernel, bool kViscosity, bool kArtificialStress>
+SoilRateSummary acceleration_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
+                                  const SoilParams<D>& prm, SoilParticles<D>& P) {
+  using Vec = sph::Vec<D>;
+  const std::int64_t n = static_cast<std::int64_t>(P.n_free);
+  const SoilArtificialViscosity av = prm.viscosity;
+  const double c = prm.sound_speed;
+  const double w_dp = kernel.w(prm.dp);
+  const double as_exponent = prm.artificial_stress.exponent;
+  const Vec g = prm.gravity;
+  double max_v2 = 0.0, max_a2 = 0.0;
+#pragma omp parallel for schedule(dynamic, 256) reduction(max : max_v2, max_a2)
+  for (std::int64_t i = 0; i < n; ++i) {
+    const Vec v_i = P.velocity[i];
+    const double rho_i = P.density[i];
+    const double rho_weight_i = rho_i * P.weight_ratio[i];  // rho^s of eq. 16 when submerged
+    const Eigen::Matrix3d& sigma_i = P.stress[i];
+    Vec acc = Vec::Zero();
+    auto pair_terms = [&](const auto& pair, const Vec& v_j) {
+      const std::int32_t j = pair.b;
+      const Vec grad_w = kernel.grad_factor(pair.r) * pair.x_ab;
+      acc += stress_divergence_acceleration<D>(P.mass[j], sigma_i, P.stress[j], rho_weight_i,
+                                               P.density[j], grad_w);
+      if constexpr (kArtificialStress) {
+        const double f_n = artificial_stress_factor(kernel.w(pair.r), w_dp, as_exponent);
+        acc += artificial_stress_acceleration<D>(P.mass[j], P.artificial_stress[i],
+                                                 P.artificial_stress[j], f_n, grad_w);
+      }
+      if constexpr (kViscosity) {
+        acc += av.acceleration<D>(P.mass[j], Vec(v_i - v_j), pair.x_ab, c, c, rho_i, P.density[j],
+                                  grad_w);
+      }
+    };
+    for (auto it = nl.begin(i); it != nl.mid(i); ++it) pair_terms(*it, P.velocity[it->b]);
+    for (auto it = nl.mid(i); it != nl.end(i); ++it) pair_terms(*it, P.wall_velocity[it->b]);
+    acc += g;
+    P.acceleration[i] = acc;
+    max_v2 = std::max(max_v2, v_i.squaredNorm());
+    max_a2 = std::max(max_a2, (acc + P.interaction[i]).squaredNorm());
+  }
+  return SoilRateSummary{std::sqrt(max_v2), std::sqrt(max_a2)};
+}
+
+template <int D, class Kernel, bool kViscosity>
+SoilRateSummary dispatch_artificial_stress(const sph::NeighbourList<D>& nl, const Kernel& k,
+                                           const SoilParams<D>& prm, SoilParticles<D>& P) {
+  if (prm.any_artificial_stress())
+    return acceleration_loop<D, Kernel, kViscosity, true>(nl, k, prm, P);
+  return acceleration_loop<D, Kernel, kViscosity, false>(nl, k, prm, P);
+}
+
+}  // namespace
+
+template <int D>
+void update_artificial_stress(const SoilParams<D>& params, SoilParticles<D>& P) {
+  const std::int64_t n = static_cast<std::int64_t>(P.size());
+  const double epsilon = params.artificial_stress.epsilon;
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    const std::int64_t m = P.material[i];
+    const bool on = m < 0 || params.materials[m].artificial_stress;
+    if (on) {
+      P.artificial_stress[i] = artificial_stress<D>(P.stress[i], P.density[i], epsilon);
+    } else {
+      P.artificial_stress[i].setZero();
+    }
+  }
+}
+
+template <int D, class Kernel>
+SoilRateSummary compute_soil_rates(const sph::NeighbourList<D>& neighbours, const Kernel& kernel,
+                                   const SoilParams<D>& params, SoilParticles<D>& P) {
+  const bool viscosity = params.viscosity.alpha > 0.0 || params.viscosity.beta > 0.0;
+  if (viscosity) return dispatch_artificial_stress<D, Kernel, true>(neighbours, kernel, params, P);
+  return dispatch_artificial_stress<D, Kernel, false>(neighbours, kernel, params, P);
+}
+
+template <int D, class Kernel>
+void compute_soil_kinematics(const sph::NeighbourList<D>& nl, const Kernel& kernel,
+                             SoilParticles<D>& P) {
+  using Vec = sph::Vec<D>;
+  using Mat = MatD<D>;
+  const std::int64_t n = static_cast<std::int64_t>(P.n_free);
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::int64_t i = 0; i < n; ++i) {
+    const Vec v_i = P.velocity[i];
+    Mat grad_v = Mat::Zero();
+    double divergence = 0.0;
+    for (auto it = nl.begin(i); it != nl.mid(i); ++it) {
+      const std::int32_t j = it->b;
+      const Vec grad_w = kernel.grad_factor(it->r) * it->x_ab;
+      const double volume_j = P.mass[j] / P.density[j];
+      accumulate_velocity_gradient<D>(grad_v, volume_j, Vec(P.velocity[j] - v_i), grad_w);
+      divergence += volume_j * (v_i - P.velocity[j]).dot(grad_w);
+    }
+    for (auto it = nl.mid(i); it != nl.end(i); ++it) {  // fixed: own velocity in continuity
+      const std::int32_t w = it->b;
+      const Vec grad_w = kernel.grad_factor(it->r) * it->x_ab;
+      const double volume_w = P.mass[w] / P.density[w];
+      accumulate_velocity_gradient<D>(grad_v, volume_w, Vec(P.wall_velocity[w] - v_i), grad_w);
+      divergence += volume_w * (v_i - P.velocity[w]).dot(grad_w);
+    }
+    P.velocity_gradient[i] = embed_in_3d<D>(grad_v);
+    P.density_rate[i] = P.density[i] * divergence;
+  }
+}
+
+#define POROSPH_INSTANTIATE(D, KERNEL)                                                          \
+  template SoilRateSummary compute_soil_rates<D, KERNEL<D>>(                                    \
+      const sph::NeighbourList<D>&, const KERNEL<D>&, const SoilParams<D>&, SoilParticles<D>&); \
+  template void compute_soil_kinematics<D, KERNEL<D>>(const sph::NeighbourList<D>&,             \
+                                                      const KERNEL<D>&, SoilParticles<D>&);
+POROSPH_INSTANTIATE(2, sph::CubicSpline)
+POROSPH_INSTANTIATE(2, sph::WendlandC2)
+POROSPH_INSTANTIATE(3, sph::CubicSpline)
+POROSPH_INSTANTIATE(3, sph::WendlandC2)
+#undef POROSPH_INSTANTIATE
+template void update_artificial_stress<2>(const SoilParams<2>&, SoilParticles<2>&);
+template void update_artificial_stress<3>(const SoilParams<3>&, SoilParticles<3>&);
+
+}  // namespace porosph::soil

@@ -1,0 +1,337 @@
+#include "soil_solver/soil_solver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "soil_solver/initial_stress.h"
+#include "soil_solver/porosity.h"
+#include "soil_solver/soil_output.h"
+#include "soil_solver/soil_rates.h"
+#include "soil_solver/soil_walls.h"
+#include "soil_solver/stress_filter.h"
+#include "soil_solver/stress_update.h"
+#include "soil_solver/wall_normals.h"
+#include "sph/geometry.h"
+
+namespace porosph::soil {
+namespace {
+
+/// Free soil particles are re-sorted by cell this often (steps), for memory locality.
+constexpr std::uint64_t kReorderEvery = 20;
+
+}  // namespace
+
+template <int D>
+SoilSolver<D>::SoilSolver(const scene::Scene& s)
+    : params_(SoilParams<D>::from_scene(s)),
+      box_(sph::DomainBox<D>::from_scene(s, 2.0 * params_.h)),
+      cubic_(params_.h),
+      wendland_(params_.h) {
+  using Vec = sph::Vec<D>;
+  if (s.run.kernel == "cubic_spline") {
+    kernel_kind_ = KernelKind::CubicSpline;
+  } else if (s.run.kernel == "wendland_c2") {
+    kernel_kind_ = KernelKind::WendlandC2;
+  } else {
+    throw std::invalid_argument("run.kernel: unknown kernel '" + s.run.kernel + "'");
+  }
+  for (const auto& o : s.observables)
+    if (o.phase == "soil") observables_.push_back(sph::prepare_observable<D>(o));
+
+  struct NewParticle {
+    Vec x;
+    std::int64_t material;
+    double remove_at;
+    bool no_slip;
+    Vec normal;
+  };
+  std::vector<NewParticle> free, fixed;
+  const double dp = params_.dp;
+  const std::vector<scene::Shape> walls = s.walls_acting_on("soil");
+  const std::vector<scene::Shape>& blocks = s.soil->blocks;
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    const int material = s.soil->material_index(blocks[b].material);
+    if (material < 0) {
+      throw std::invalid_argument("soil block '" + blocks[b].label + "': unknown material '" +
+                                  blocks[b].material + "'");
+    }
+    for (const Vec& x : sph::fill_block_outside_walls<D>(blocks[b], walls, dp)) {
+      Vec wrapped = x;
+      box_.wrap(wrapped);
+      if (box_.outside(x) || wrapped != x) continue;
+      bool taken = false;  // an earlier block holds this lattice point
+      for (std::size_t e = 0; e < b && !taken; ++e) taken = sph::inside_shape<D>(blocks[e], x, dp);
+      if (taken) continue;
+      const bool rigid = params_.materials[material].fixed;
+      const Vec unknown = Vec::Constant(std::nan(""));  // fixed soil: normal from the soil around
+      (rigid ? fixed : free).push_back({x, material, -1.0, params_.no_slip, unknown});
+    }
+  }
+  int wall_reach = 2;  // probe past the thickest wall
+  for (const auto& wall : walls) wall_reach = std::max(wall_reach, wall.layers + 2);
+  for (const auto& wall : walls) {
+    const bool no_slip =
+        wall.condition == "default" ? params_.no_slip : wall.condition == "no_slip";
+    for (const Vec& x : sph::fill_shape<D>(wall, dp)) {
+      Vec wrapped = x;
+      box_.wrap(wrapped);
+      if (wrapped != x) continue;
+      const Vec normal = wall_normal_from_geometry<D>(x, walls, dp, wall_reach);
+      fixed.push_back({x, -1, wall.remove_at, no_slip, normal});
+      if (wall.remove_at >= 0.0 &&
+          (next_wall_removal_ < 0.0 || wall.remove_at < next_wall_removal_))
+        next_wall_removal_ = wall.remove_at;
+    }
+  }
+  SoilParticles<D>& P = particles_;
+  const std::size_t n = free.size() + fixed.size();
+  P.n_free = free.size();
+  P.for_each_array([n](auto& array) { array.resize(n); });
+  // Walls take the density of the first material until free soil reaches them.
+  const double wall_density = params_.materials.empty() ? 1000.0 : params_.materials[0].density;
+  for (std::size_t i = 0; i < n; ++i) {
+    const NewParticle& q = i < P.n_free ? free[i] : fixed[i - P.n_free];
+    P.position[i] = q.x;
+    P.velocity[i] = P.acceleration[i] = P.interaction[i] = Vec::Zero();
+    P.wall_velocity[i] = P.displacement[i] = Vec::Zero();
+    P.wall_normal[i] = q.normal;
+    P.stress[i] = P.velocity_gradient[i] = P.artificial_stress[i] = Eigen::Matrix3d::Zero();
+    const double rho = q.material >= 0 ? params_.materials[q.material].density : wall_density;
+    P.density[i] = P.reference_density[i] = rho;
+    P.density_rate[i] = 0.0;
+    P.mass[i] = rho * params_.volume;
+    P.porosity[i] = q.material >= 0 ? params_.materials[q.material].porosity : 0.0;
+    P.plastic_strain[i] = 0.0;
+    P.saturation[i] = 0.0;
+    P.weight_ratio[i] = 1.0;
+    P.wet[i] = 0;
+    P.remove_at[i] = q.remove_at;
+    P.id[i] = static_cast<std::int64_t>(i);
+    P.material[i] = q.material;
+    P.fixed[i] = i < P.n_free ? 0 : 1;
+    P.no_slip[i] = q.no_slip ? 1 : 0;
+  }
+  if (params_.geostatic_initial) apply_geostatic_stress<D>(params_, P);
+  reorder_by_cell();
+}
+
+template <int D>
+void SoilSolver<D>::build_neighbours() {
+  neighbours_.build(particles_.position.data(), particles_.size(), particles_.n_free,
+                    2.0 * params_.h, box_);
+}
+
+template <int D>
+void SoilSolver<D>::reorder_by_cell() {
+  build_neighbours();
+  const std::size_t n_free = particles_.n_free;
+  order_scratch_.clear();
+  for (std::int32_t i : neighbours_.cell_order())
+    if (static_cast<std::size_t>(i) < n_free) order_scratch_.push_back(i);
+  for (std::size_t i = n_free; i < particles_.size(); ++i)  // fixed particles never move
+    order_scratch_.push_back(static_cast<std::int32_t>(i));
+  particles_.permute(order_scratch_);
+  build_neighbours();
+}
+
+template <int D>
+void SoilSolver<D>::compute_rates() {
+  if (step_ > 0 && step_ % kReorderEvery == 0) {
+    reorder_by_cell();
+  } else {
+    build_neighbours();
+  }
+  if (kernel_kind_ == KernelKind::CubicSpline) {
+    compute_rates_with(cubic_);
+  } else {
+    compute_rates_with(wendland_);
+  }
+}
+
+template <int D>
+template <class Kernel>
+void SoilSolver<D>::compute_rates_with(const Kernel& kernel) {
+  const int every = params_.stress_filter_every;
+  if (every > 0 && step_ > 0 && step_ % static_cast<std::uint64_t>(every) == 0)
+    shepard_stress_filter(neighbours_, kernel, particles_, filter_scratch_);
+  update_soil_wall_state(neighbours_, kernel, params_, particles_);
+  if (params_.any_artificial_stress()) update_artificial_stress(params_, particles_);
+  const SoilRateSummary r = compute_soil_rates(neighbours_, kernel, params_, particles_);
+  limits_ = sph::time_step_limits(params_.h, params_.sound_speed, r.max_speed, 0.0,
+                                  r.max_total_acceleration, params_.cfl, 0.125, params_.c_a);
+}
+
+template <int D>
+double SoilSolver<D>::evaluate(const sph::PreparedObservable<D>& o,
+                               const sph::ParticleView<D>& view) const {
+  if (kernel_kind_ == KernelKind::CubicSpline) return sph::evaluate_observable(o, view, cubic_);
+  return sph::evaluate_observable(o, view, wendland_);
+}
+
+template <int D>
+void SoilSolver<D>::fill_state(coupling::StepState& out, const std::vector<double>& overlap_min,
+                               const std::vector<double>& overlap_max) {
+  const SoilParticles<D>& P = particles_;
+  out.step = step_;
+  out.time = time_;
+  out.dt_cfl = limits_.cfl;
+  out.dt_viscous = limits_.viscous;
+  out.dt_force = limits_.force;
+  out.dt_limit = limits_.min();
+  fill_soil_overlap(P, overlap_min, overlap_max, overlap_index_, out);
+  fill_soil_diagnostics(P, out.region_min, out.region_max, out.diagnostics);
+  out.diagnostics.removed_count = removed_count_;
+  sph::ParticleView<D> view{P.position.data(), P.velocity.data(), P.mass.data(), nullptr, P.n_free};
+  view.density = P.density.data();
+  view.porosity = P.porosity.data();
+  view.stress = P.stress.data();
+  view.displacement = P.displacement.data();
+  for (const auto& o : observables_) out.diagnostics.observables[o.name] = evaluate(o, view);
+}
+
+template <int D>
+void SoilSolver<D>::add_interaction(const std::vector<double>& acceleration) {
+  if (acceleration.size() != overlap_index_.size() * D) {
+    throw std::invalid_argument("add_interaction: expected " +
+                                std::to_string(overlap_index_.size() * D) + " values, got " +
+                                std::to_string(acceleration.size()));
+  }
+  std::fill(particles_.interaction.begin(), particles_.interaction.end(), sph::Vec<D>::Zero());
+  for (std::size_t i = 0; i < overlap_index_.size(); ++i) {
+    const std::size_t index = static_cast<std::size_t>(overlap_index_[i]);
+    if (index >= particles_.n_free) continue;  // fixed soil exchanges drag but never moves
+    for (int k = 0; k < D; ++k) particles_.interaction[index][k] = acceleration[i * D + k];
+  }
+  interaction_fresh_ = true;
+  interaction_nonzero_ = true;
+}
+
+template <int D>
+void SoilSolver<D>::set_saturation(const std::vector<double>& saturation) {
+  SoilParticles<D>& P = particles_;
+  if (!saturation.empty() && saturation.size() != overlap_index_.size()) {
+    throw std::invalid_argument("set_saturation: expected " +
+                                std::to_string(overlap_index_.size()) + " values, got " +
+                                std::to_string(saturation.size()));
+  }
+  if (saturation.empty() && !saturation_set_) return;  // never near water: nothing to reset
+  saturation_set_ = !saturation.empty();
+  std::fill(P.saturation.begin(), P.saturation.end(), 0.0);  // far from the water: dry
+  std::fill(P.weight_ratio.begin(), P.weight_ratio.end(), 1.0);
+  for (std::size_t k = 0; k < saturation.size(); ++k) {
+    const std::size_t i = static_cast<std::size_t>(overlap_index_[k]);
+    const SoilMaterialConstants& m = params_.materials[P.material[i]];
+    P.saturation[i] = saturation[k];
+    if (saturation[k] >= params_.submerged_saturation) P.weight_ratio[i] = m.submerged_ratio;
+    if (saturation[k] >= params_.wet_saturation) P.wet[i] = 1;
+  }
+}
+
+template <int D>
+void SoilSolver<D>::advance(double dt) {
+  SoilParticles<D>& P = particles_;
+  if (!interaction_fresh_ && interaction_nonzero_) {
+    std::fill(P.interaction.begin(), P.interaction.end(), sph::Vec<D>::Zero());
+    interaction_nonzero_ = false;
+  }
+  interaction_fresh_ = false;
+  const bool damping = time_ < params_.damping_duration;
+  const std::int64_t n = static_cast<std::int64_t>(P.n_free);
+  const double inv_h2 = 1.0 / (params_.h * params_.h);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {  // kick
+    sph::Vec<D> a = P.acceleration[i] + P.interaction[i];
+    if (damping) {  // dynamic relaxation: a -= D v, D = coefficient sqrt(E / (rho h^2))
+      const auto& m = params_.materials[P.material[i]];
+      a -= params_.damping_coefficient * std::sqrt(m.young * inv_h2 / P.density[i]) * P.velocity[i];
+    }
+    P.velocity[i] += dt * a;
+  }
+  // Strain rate, spin and drho/dt from the new velocities at the old positions (the neighbour
+  // list of this step is still exact), then the stress update.
+  if (kernel_kind_ == KernelKind::CubicSpline) {
+    compute_soil_kinematics(neighbours_, cubic_, P);
+  } else {
+    compute_soil_kinematics(neighbours_, wendland_, P);
+  }
+  update_stresses(dt);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {  // drift
+    P.position[i] += dt * P.velocity[i];
+    P.displacement[i] += dt * P.velocity[i];
+    P.density[i] += dt * P.density_rate[i];
+    const SoilMaterialConstants& m = params_.materials[P.material[i]];
+    P.porosity[i] = porosity_from_density(m.porosity, P.reference_density[i], P.density[i]);
+    box_.wrap(P.position[i]);
+  }
+  time_ += dt;
+  ++step_;
+  if (params_.damping_duration > 0.0 && !damping_released_ && time_ >= params_.damping_duration) {
+    for (std::int64_t i = 0; i < n; ++i) P.velocity[i].setZero();  // end of the damping stage
+    damping_released_ = true;
+  }
+  remove_particles_outside();
+  remove_expired_walls();
+}
+
+template <int D>
+void SoilSolver<D>::update_stresses(double dt) {
+  SoilParticles<D>& P = particles_;
+  const std::int64_t n = static_cast<std::int64_t>(P.n_free);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    const SoilMaterialConstants& m = params_.materials[P.material[i]];
+    const Material& model = P.wet[i] ? m.wet_model : m.model;  // cohesion lost once wet
+    const Eigen::Matrix3d& grad_v = P.velocity_gradient[i];
+    PlasticState plastic{P.plastic_strain[i], false};
+    P.stress[i] = update_stress(model, P.stress[i], strain_rate(grad_v), spin(grad_v), dt, plastic);
+    P.plastic_strain[i] = plastic.plastic_multiplier;
+  }
+}
+
+template <int D>
+void SoilSolver<D>::remove_particles_outside() {
+  const SoilParticles<D>& P = particles_;
+  const std::int64_t n = static_cast<std::int64_t>(P.n_free);
+  std::int64_t outside = 0;
+#pragma omp parallel for schedule(static) reduction(+ : outside)
+  for (std::int64_t i = 0; i < n; ++i) outside += box_.outside(P.position[i]) ? 1 : 0;
+  if (outside == 0) return;
+  keep_scratch_.assign(P.size(), 1);
+  for (std::int64_t i = 0; i < n; ++i) keep_scratch_[i] = box_.outside(P.position[i]) ? 0 : 1;
+  removed_count_ += particles_.compact(keep_scratch_);
+}
+
+template <int D>
+void SoilSolver<D>::remove_expired_walls() {
+  if (next_wall_removal_ < 0.0 || time_ < next_wall_removal_) return;
+  SoilParticles<D>& P = particles_;
+  keep_scratch_.assign(P.size(), 1);
+  next_wall_removal_ = -1.0;
+  for (std::size_t w = P.n_free; w < P.size(); ++w) {
+    const double t = P.remove_at[w];
+    if (t < 0.0) continue;
+    if (t <= time_) {
+      keep_scratch_[w] = 0;
+    } else if (next_wall_removal_ < 0.0 || t < next_wall_removal_) {
+      next_wall_removal_ = t;
+    }
+  }
+  P.compact(keep_scratch_);
+}
+
+template <int D>
+std::optional<std::string> SoilSolver<D>::find_non_finite(std::int64_t* particle_id) const {
+  return find_non_finite_soil(particles_, step_, time_, particle_id);
+}
+
+template <int D>
+std::vector<io::FieldView> SoilSolver<D>::snapshot_fields() const {
+  return soil_snapshot_fields(particles_);
+}
+
+template class SoilSolver<2>;
+template class SoilSolver<3>;
+
+}  // namespace porosph::soil

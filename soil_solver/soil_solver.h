@@ -1,0 +1,120 @@
+// The soil phase solver (elastic-perfectly-plastic Drucker-Prager SPH, seed paper eq. 5-12 and
+// 18-21; Bui et al. 2008): owns the soil and its fixed particles, computes the internal
+// accelerations, strain rates and stress rates, reports its state to the coupler and integrates
+// with the shared dt. The coupling loop (soil_solver/main.cpp, proto/solver_runtime.h) drives it:
+//   compute_rates(); fill_state(state, ...); <exchange>; add_interaction(a); advance(dt);
+//
+// Time integration (symplectic Euler): kick v += dt a(sigma^n) (minus the damping stage's D v);
+// strain rate, spin and drho/dt from the NEW velocities at the old positions (a second neighbour
+// pass on the same list); the stress update of stress_update.h (Jaumann rate + Drucker-Prager, then
+// tension cracking and scaling back); drift x += dt v, rho += dt drho/dt, porosity from rho
+// (eq. 20). Updating the stress from the new velocities is what keeps the explicit velocity-stress
+// system stable up to the CFL limit: with velocity and stress both advanced from the old state
+// (forward Euler) every elastic wave is amplified each step, and a column at rest blows up within
+// a few hundred steps (measured on cases/soil_column).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "io/snapshot_writer.h"
+#include "proto/coupling_client.h"
+#include "scene/scene.h"
+#include "soil_solver/soil_params.h"
+#include "soil_solver/soil_particles.h"
+#include "sph/domain_box.h"
+#include "sph/kernels.h"
+#include "sph/neighbour_list.h"
+#include "sph/observables.h"
+#include "sph/time_step_limits.h"
+
+namespace porosph::soil {
+
+template <int D>
+class SoilSolver {
+ public:
+  /// Particles from scene.soil.blocks (lattice points inside the soil's walls or an earlier block
+  /// skipped, points outside the domain dropped; blocks of a fixed material become fixed
+  /// particles) and from the walls acting on soil. Masses m = rho dp^D. Stress: geostatic or zero
+  /// per soil.initial_stress. Throws std::invalid_argument on a bad scene.
+  explicit SoilSolver(const scene::Scene& scene);
+
+  /// Neighbour search + fixed-particle state + artificial stress + all rates.
+  void compute_rates();
+  sph::DtLimits dt_limits() const { return limits_; }
+
+  /// Diagnostics and the overlap set (free soil particles inside [overlap_min, overlap_max]; with
+  /// porosity and material). Reuses out's vectors.
+  void fill_state(coupling::StepState& out, const std::vector<double>& overlap_min,
+                  const std::vector<double>& overlap_max);
+  /// Adds accelerations (n*D, row-major) to the overlap particles of the last fill_state (fixed
+  /// soil among them ignores its share).
+  void add_interaction(const std::vector<double>& acceleration);
+  /// The water volume fraction around each overlap particle of the last fill_state (empty: none
+  /// near water). A particle at or above coupling.submerged_saturation carries its submerged weight
+  /// (stress divergence over rho^s = rho (rho_sat - rho_w) / rho_dry, seed eq. 16); at or above
+  /// coupling.wet_saturation it is wet for good (wet_cohesion_loss: cohesion 0 from then on, its
+  /// stress scaled back onto the cohesionless surface at the next update). Particles outside the
+  /// overlap set are dry.
+  void set_saturation(const std::vector<double>& saturation);
+  /// One step (see above), periodic wrap, removal of particles leaving the domain and of walls
+  /// whose time has come; time += dt; ++step.
+  void advance(double dt);
+
+  std::optional<std::string> find_non_finite(std::int64_t* particle_id) const;
+  /// position, velocity, density, stress (N x 9, row-major 3x3, tension positive), porosity,
+  /// plastic_strain, displacement, saturation, id, material, fixed; valid until the next
+  /// compute_rates/advance.
+  std::vector<io::FieldView> snapshot_fields() const;
+
+  double time() const { return time_; }
+  std::uint64_t step() const { return step_; }
+  std::size_t particle_count() const { return particles_.size(); }
+  std::size_t free_count() const { return particles_.n_free; }
+
+  const SoilParticles<D>& particles() const { return particles_; }
+  SoilParticles<D>& mutable_particles() { return particles_; }  ///< for tests
+  const SoilParams<D>& params() const { return params_; }
+
+ private:
+  enum class KernelKind { CubicSpline, WendlandC2 };
+  template <class Kernel>
+  void compute_rates_with(const Kernel& kernel);
+  void build_neighbours();
+  void reorder_by_cell();
+  void update_stresses(double dt);
+  void remove_particles_outside();
+  void remove_expired_walls();
+  double evaluate(const sph::PreparedObservable<D>& o, const sph::ParticleView<D>& view) const;
+
+  SoilParams<D> params_;
+  sph::DomainBox<D> box_;
+  KernelKind kernel_kind_ = KernelKind::CubicSpline;
+  sph::CubicSpline<D> cubic_;
+  sph::WendlandC2<D> wendland_;
+  std::vector<sph::PreparedObservable<D>> observables_;
+
+  SoilParticles<D> particles_;
+  sph::NeighbourList<D> neighbours_;
+  sph::DtLimits limits_;
+  double time_ = 0.0;
+  std::uint64_t step_ = 0;
+  std::uint64_t removed_count_ = 0;
+  bool damping_released_ = false;  ///< velocities zeroed at the end of the damping stage
+  bool interaction_fresh_ = false;
+  bool interaction_nonzero_ = false;
+  bool saturation_set_ = false;  ///< some particle has a non-zero saturation
+  double next_wall_removal_ = -1.0;
+
+  std::vector<std::int32_t> overlap_index_;
+  std::vector<std::int32_t> order_scratch_;
+  std::vector<std::uint8_t> keep_scratch_;
+  std::vector<Eigen::Matrix3d> filter_scratch_;
+};
+
+extern template class SoilSolver<2>;
+extern template class SoilSolver<3>;
+
+}  // namespace porosph::soil

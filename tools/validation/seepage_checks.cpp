@@ -1,0 +1,52 @@
+#include "tools/validation/seepage_checks.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "soil_solver/permeability.h"
+#include "tools/validation/run_directory.h"
+
+namespace porosph::validation {
+
+DarcyColumnCheck check_darcy_column(const std::string& run_dir) {
+  const auto run = read_run_json(run_dir);
+  const auto& parameters = run.at("parameters");
+  const auto gravity = parameters.at("run").at("gravity").get<std::vector<double>>();
+  double g = 0;
+  for (double c : gravity) g += c * c;
+  g = std::sqrt(g);
+  const auto& water = parameters.at("water");
+  const double nu = water.at("viscosity").get<double>() / water.at("rho0").get<double>();
+  const auto& m = parameters.at("soil").at("materials").at(0);
+  const double n = m.at("porosity").get<double>();
+  DarcyColumnCheck out;
+  out.seepage = m.at("seepage").get<std::string>();
+  soil::SeepageCoefficients c;
+  if (out.seepage == "darcy_kozeny_carman") {
+    c = soil::darcy_kozeny_carman(n, m.at("effective_diameter").get<double>(), g, nu);
+  } else if (out.seepage == "darcy_conductivity") {
+    c = soil::darcy_constant(m.at("hydraulic_conductivity").get<double>());
+  } else if (out.seepage == "forchheimer_den_adel") {
+    c = soil::forchheimer_den_adel(n, m.at("d15").get<double>(), g, nu,
+                                   m.at("den_adel_alpha").get<double>(),
+                                   m.at("den_adel_beta").get<double>());
+  } else {
+    throw std::runtime_error(run_dir + ": the first soil material has no seepage law");
+  }
+  out.a = c.a;
+  out.b = c.b;
+  // i = a q + b q^2 = 1.
+  out.expected = c.b > 0 ? (-c.a + std::sqrt(c.a * c.a + 4 * c.b)) / (2 * c.b) : 1.0 / c.a;
+  out.quadratic_share = c.b * out.expected * out.expected;  // of i = 1
+  const auto series = read_timeseries(run_dir);
+  const auto& q = series.column("darcy_velocity");
+  const auto& t = series.column("t");
+  if (q.size() < 2) throw std::runtime_error(run_dir + ": fewer than two outputs");
+  out.simulated = std::abs(q.back());
+  out.time = t.back();
+  out.rel_error = std::abs(out.simulated - out.expected) / out.expected;
+  out.settling = std::abs(q.back() - q[q.size() - 2]) / std::max(1e-300, std::abs(q.back()));
+  return out;
+}
+
+}  // namespace porosph::validation

@@ -1,0 +1,46 @@
+// Comparisons of finished soil runs with their references (issue 3): the settled dry column
+// against the weight of the soil above, and the observables of the granular column collapse.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace porosph::validation {
+
+/// Dry soil column at rest: the vertical stress u.sigma.u (u = -g/|g|) of every free particle at
+/// the last snapshot of soil.h5 against the weight of the soil above it, -|g| (sum over the
+/// particles above it in its initial column of rho_j dp + rho_i dp / 2), rho the material density
+/// (the particle's mass per lattice volume), with the top and bottom two rows excluded.
+struct SoilColumnCheck {
+  double time = 0;
+  std::size_t particles = 0;            ///< free particles checked
+  double max_rel_error = 0;             ///< per particle, max |sigma_v - exact| / |exact|
+  double mean_rel_error = 0;            ///< per particle, mean
+  double max_row_rel_error = 0;         ///< per initial row: |mean sigma_v - exact| / |exact|
+  double mean_ratio = 0;                ///< mean of sigma_h / sigma_v over the checked particles
+  double min_ratio = 0, max_ratio = 0;  ///< range of the row means of sigma_h / sigma_v
+  double mean_out_of_plane_ratio = 0;   ///< 2D: mean sigma_zz / sigma_v
+  double k0_elastic = 0, k0_jaky = 0;   ///< nu / (1 - nu) and 1 - sin(phi) of the first material
+  double max_speed = 0;                 ///< [m/s] at the last snapshot
+};
+
+SoilColumnCheck check_soil_column(const std::string& run_dir);
+
+/// Final deposit of a collapsed column standing against a back wall at its initial minimum x.
+struct CollapseMeasurement {
+  double time = 0;
+  double runout = 0;          ///< deposit front from the back wall: max (x - x_wall) + dp/2 [m]
+  double height_at_wall = 0;  ///< top of the soil within 2 dp of the back wall, + dp/2 [m]
+  double initial_height = 0, initial_width = 0;  ///< of the column at t = 0 [m]
+  /// Angle [deg] of the failure surface: the boundary, in the initial configuration, between the
+  /// particles that moved less than a threshold and the others, fitted by least squares through
+  /// the top unmoved particle of each initial column. Thresholds dp/2, dp and 2 dp.
+  double thresholds[3] = {0, 0, 0};
+  double failure_angle_deg[3] = {0, 0, 0};
+  double max_speed = 0;  ///< [m/s] at the last snapshot: ~0 once the deposit is at rest
+  std::size_t particles = 0;
+};
+
+CollapseMeasurement measure_collapse(const std::string& run_dir);
+
+}  // namespace porosph::validation
