@@ -67,6 +67,9 @@ std::vector<std::string> CoupledStepLoop::timeseries_columns() const {
 }
 
 void CoupledStepLoop::collect_states() {
+  // Once per step, not only when a receive times out: a SIGINT/SIGTERM or a dead solver must stop
+  // a run whose solvers answer every step too (a waitpid per solver, microseconds).
+  check_alive_();
   // received_ keeps its nodes between steps: resetting the flags allocates nothing.
   for (auto& [phase, flag] : received_) flag = false;
   std::size_t received_count = 0;

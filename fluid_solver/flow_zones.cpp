@@ -88,7 +88,8 @@ void FlowZones<D>::begin_step(double time, double dt) {
 }
 
 template <int D>
-std::size_t FlowZones<D>::renew(FluidParticles<D>& P, double volume, std::int64_t& next_id) {
+std::size_t FlowZones<D>::renew(FluidParticles<D>& P, double volume, std::int64_t& next_id,
+                                double& born_mass) {
   born_.for_each_array([](auto& array) { array.clear(); });
   std::size_t zone_particles = 0;
   for (std::size_t a = 0; a < P.n_free; ++a) {
@@ -100,6 +101,7 @@ std::size_t FlowZones<D>::renew(FluidParticles<D>& P, double volume, std::int64_
     const std::size_t b = born_.size() - 1;
     born_.position[b] -= inflows_[z].lattice_length * inflows_[z].direction;
     born_.mass[b] = born_.density[b] * volume;
+    born_mass += born_.mass[b];
     born_.id[b] = next_id++;
     born_.acceleration[b].setZero();
     born_.interaction[b].setZero();

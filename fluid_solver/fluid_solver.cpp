@@ -184,6 +184,8 @@ void FluidSolver<D>::fill_state(coupling::StepState& out, const std::vector<doub
   d.particle_count = P.size();
   d.free_count = P.n_free;
   d.removed_count = removed_count_;
+  d.inflow_mass = inflow_mass_;
+  d.outflow_mass = outflow_mass_;
   d.mass = mass;
   d.kinetic_energy = energy;
   d.max_speed = std::sqrt(max_v2);
@@ -249,7 +251,7 @@ void FluidSolver<D>::integrate(double dt) {
     sph::verlet_step_scalar(P.density[a], P.density_previous[a], P.density_rate[a], dt, euler);
     box_.wrap(P.position[a]);
   }
-  if (past_zone > 0) born_count_ += zones_.renew(P, params_.volume, next_id_);
+  if (past_zone > 0) born_count_ += zones_.renew(P, params_.volume, next_id_, inflow_mass_);
   remove_leaving_particles();
 }
 
@@ -267,7 +269,11 @@ void FluidSolver<D>::remove_leaving_particles() {
   for (std::int64_t a = 0; a < n; ++a) leaving += leaves(a) ? 1 : 0;
   if (leaving == 0) return;
   keep_scratch_.assign(particles_.size(), 1);
-  for (std::int64_t a = 0; a < n; ++a) keep_scratch_[a] = leaves(a) ? 0 : 1;
+  for (std::int64_t a = 0; a < n; ++a) {
+    if (!leaves(a)) continue;
+    keep_scratch_[a] = 0;
+    outflow_mass_ += particles_.mass[a];
+  }
   removed_count_ += particles_.compact(keep_scratch_);
 }
 

@@ -104,6 +104,8 @@ class FluidSolver {
   std::uint64_t step_ = 0;
   std::uint64_t removed_count_ = 0;
   std::uint64_t born_count_ = 0;
+  double inflow_mass_ = 0.0;   ///< mass of the particles born in inflow zones so far [kg]
+  double outflow_mass_ = 0.0;  ///< mass of the particles removed so far [kg]
   std::int64_t next_id_ = 0;  ///< id of the next particle born in an inflow zone
   bool filtered_this_step_ = false;
   bool interaction_fresh_ = false;    ///< add_interaction called since the last advance

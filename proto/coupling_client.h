@@ -43,6 +43,7 @@ struct Diagnostics {
   std::vector<double> momentum;
   std::map<std::string, double> observables;
   double physics_seconds = 0;
+  double inflow_mass = 0, outflow_mass = 0;  ///< since t = 0: born in inflow zones, removed
 };
 
 /// One solver's report after computing its accelerations for the current state.

@@ -27,6 +27,8 @@ void to_wire(const coupling::Diagnostics& in, Diagnostics& out) {
   out.set_kinetic_energy(in.kinetic_energy);
   out.set_max_speed(in.max_speed);
   out.set_physics_seconds(in.physics_seconds);
+  out.set_inflow_mass(in.inflow_mass);
+  out.set_outflow_mass(in.outflow_mass);
   assign(out.mutable_momentum(), in.momentum);
   auto& observables = *out.mutable_observables();
   // Update in place (no node churn when the names stay the same), then drop stale names.
@@ -46,6 +48,8 @@ void from_wire(const Diagnostics& in, coupling::Diagnostics& out) {
   out.kinetic_energy = in.kinetic_energy();
   out.max_speed = in.max_speed();
   out.physics_seconds = in.physics_seconds();
+  out.inflow_mass = in.inflow_mass();
+  out.outflow_mass = in.outflow_mass();
   assign(out.momentum, in.momentum());
   for (const auto& [name, value] : in.observables()) {
     auto it = out.observables.find(name);

@@ -182,6 +182,7 @@ void SoilSolver<D>::fill_state(coupling::StepState& out, const std::vector<doubl
   fill_soil_overlap(P, overlap_min, overlap_max, overlap_index_, out);
   fill_soil_diagnostics(P, out.region_min, out.region_max, out.diagnostics);
   out.diagnostics.removed_count = removed_count_;
+  out.diagnostics.outflow_mass = outflow_mass_;
   sph::ParticleView<D> view{P.position.data(), P.velocity.data(), P.mass.data(), nullptr, P.n_free};
   view.density = P.density.data();
   view.porosity = P.porosity.data();
@@ -299,7 +300,11 @@ void SoilSolver<D>::remove_particles_outside() {
   for (std::int64_t i = 0; i < n; ++i) outside += box_.outside(P.position[i]) ? 1 : 0;
   if (outside == 0) return;
   keep_scratch_.assign(P.size(), 1);
-  for (std::int64_t i = 0; i < n; ++i) keep_scratch_[i] = box_.outside(P.position[i]) ? 0 : 1;
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (!box_.outside(P.position[i])) continue;
+    keep_scratch_[i] = 0;
+    outflow_mass_ += P.mass[i];
+  }
   removed_count_ += particles_.compact(keep_scratch_);
 }
 

@@ -4,32 +4,13 @@
 #include <gtest/gtest.h>
 
 #include "io/snapshot_reader.h"
+#include "tests/cases/case_runner.h"
 #include "tests/io/xdmf_check.h"
-#include "tests/support/process_support.h"
 #include "tools/validation/case_checks.h"
 #include "tools/validation/run_directory.h"
 
 namespace porosph::testing {
 namespace {
-
-struct CaseRun {
-  CommandResult result;
-  nlohmann::json record;
-  std::string out;
-};
-
-CaseRun run_case(const std::string& name, const std::vector<std::string>& overrides,
-                 double timeout_seconds = 300) {
-  CaseRun run;
-  const std::string dir = fresh_dir("case-" + name);
-  run.out = dir + "/out";
-  std::vector<std::string> argv = {bin("coupler"), "run", source("cases/" + name + "/scene.toml"),
-                                   "--out", run.out, "--no-progress"};
-  for (const auto& o : overrides) argv.insert(argv.end(), {"--set", o});
-  run.result = run_process(argv, dir + "/log.txt", timeout_seconds);
-  if (std::filesystem::exists(run.out + "/run.json")) run.record = read_json(run.out + "/run.json");
-  return run;
-}
 
 /// The run-directory contract for a water-only run with `outputs` snapshots.
 void expect_water_run_directory(const CaseRun& run, std::size_t outputs) {

@@ -160,6 +160,29 @@ TEST(CouplerRunFaults, KilledCouplerTakesItsSolversWithIt) {
   EXPECT_TRUE(wait_gone(solver, 5.0)) << "the solver outlived a killed coupler";
 }
 
+// SIGTERM while the solver answers every step (no receive ever times out): the coupler must still
+// notice, stop its solver and exit 1 with the reason.
+TEST(CouplerRunFaults, TerminatedCouplerStopsABusyRun) {
+  const std::string dir = fresh_dir("terminated-coupler");
+  const std::string scene = write_text(dir + "/scene.toml", kScene);
+  const pid_t coupler =
+      start_process({bin("coupler"), "run", scene, "--out", dir + "/out", "--fluid-solver",
+                     bin("dummy_solver") + " --phase water", "--no-progress", "--set",
+                     "run.end_time=1000", "--set", "run.output_interval=100"},
+                    dir + "/log.txt");
+  const pid_t solver = wait_for_solver_pid(dir);
+  ASSERT_GT(solver, 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));  // well inside the step loop
+  kill(coupler, SIGTERM);
+  EXPECT_EQ(wait_process(coupler, 10.0), 1) << read_text(dir + "/log.txt");
+  EXPECT_TRUE(wait_gone(solver, 5.0)) << "the solver outlived a terminated coupler";
+  const auto record = read_json(dir + "/out/run.json");
+  EXPECT_EQ(record.at("status"), "failed");
+  EXPECT_NE(record.at("message").get<std::string>().find("interrupted by signal 15"),
+            std::string::npos)
+      << record.at("message");
+}
+
 TEST(CouplerRunInput, BadSceneExitsTwoNamingFileLineAndKey) {
   const std::string dir = fresh_dir("bad-scene");
   std::string text = kScene;

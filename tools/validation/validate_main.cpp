@@ -4,11 +4,13 @@
 //   porosph_validate soil_column RUN_DIR
 //   porosph_validate granular_collapse RUN_DIR
 //   porosph_validate darcy_column RUN_DIR
+//   porosph_validate fluidized_bed RUN_DIR [--window SECONDS]
 // Exit code 0 when the target is met, 1 when not, 2 on unreadable input.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 
 #include "tools/validation/case_checks.h"
+#include "tools/validation/fluidized_bed_check.h"
 #include "tools/validation/seepage_checks.h"
 #include "tools/validation/soil_checks.h"
 
@@ -56,6 +58,30 @@ int report_darcy_column(const porosph::validation::DarcyColumnCheck& c) {
   return c.rel_error <= 0.02 ? 0 : 1;
 }
 
+int report_fluidized_bed(const porosph::validation::FluidizedBedCheck& c) {
+  std::printf(
+      "fluidized_bed at t = %.2f s (flow ramped to %.3f l/s)\n"
+      "steady mean sand porosity (last %.2f s) %.4f, drift %+.4f; at the start %.4f"
+      " (target 0.51 +- 0.02; experiment 0.51, paper's SPH 0.508)\n"
+      "bed height %.4f m -> %.4f m\n"
+      "vertical effective stress %.1f Pa -> %.3f x (experiment: about 1/3)\n",
+      c.time, 1e3 * c.max_flow_rate, c.steady_window, c.steady_porosity, c.porosity_drift,
+      c.initial_porosity, c.bed_height_initial, c.bed_height_final, c.stress_initial,
+      c.stress_ratio);
+  if (c.onset_flow_rate >= 0) {
+    std::printf("onset of fluidisation (effective stress < 10 %%) at t = %.2f s, Q = %.4f l/s"
+                " (target 0.07 .. 0.12 l/s)\n",
+                c.onset_time, 1e3 * c.onset_flow_rate);
+  } else {
+    std::printf("onset of fluidisation: none (the effective stress never fell below 10 %%)\n");
+  }
+  if (c.expansion_flow_rate >= 0) {
+    std::printf("onset of expansion (porosity +0.005) at t = %.2f s, Q = %.4f l/s\n",
+                c.expansion_time, 1e3 * c.expansion_flow_rate);
+  }
+  return c.porosity_in_target && c.onset_in_target ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -76,8 +102,15 @@ int main(int argc, char** argv) {
   collapse->add_option("run_dir", run_dir)->required();
   auto* darcy = app.add_subcommand("darcy_column", "steady seepage velocity vs the seepage law");
   darcy->add_option("run_dir", run_dir)->required();
+  auto* bed = app.add_subcommand("fluidized_bed", "steady porosity, bed height, onset flow rate");
+  bed->add_option("run_dir", run_dir)->required();
+  double window = 1.0;
+  bed->add_option("--window", window, "steady window at the end of the run [s]");
   CLI11_PARSE(app, argc, argv);
   try {
+    if (*bed) {
+      return report_fluidized_bed(porosph::validation::check_fluidized_bed(run_dir, window));
+    }
     if (*darcy) return report_darcy_column(porosph::validation::check_darcy_column(run_dir));
     if (*column) return report_soil_column(porosph::validation::check_soil_column(run_dir));
     if (*collapse) return report_collapse(porosph::validation::measure_collapse(run_dir));

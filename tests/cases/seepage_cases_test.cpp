@@ -1,0 +1,98 @@
+// The coupled cases (issue 4) through the real coupler, fluid_solver and soil_solver: Darcy and
+// Forchheimer columns against their seepage laws, and the fluidised bed (seed paper 4.1), with the
+// conservation ledger and the mass balance of in/outflow.
+#include <gtest/gtest.h>
+
+#include "io/snapshot_reader.h"
+#include "tests/cases/case_runner.h"
+#include "tests/io/xdmf_check.h"
+#include "tools/validation/fluidized_bed_check.h"
+#include "tools/validation/run_directory.h"
+#include "tools/validation/seepage_checks.h"
+
+namespace porosph::testing {
+namespace {
+
+/// The run-directory contract of a run with both phases, and its conservation: the interaction
+/// impulses balance (pairwise antisymmetric forces: round-off only, far below 1e-10 of the total
+/// impulse exchanged) and each phase's mass is initial + inflow - outflow to round-off.
+void expect_coupled_run_directory(const CaseRun& run) {
+  ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
+  const auto& r = run.record;
+  EXPECT_EQ(r.at("status"), "completed");
+  ASSERT_EQ(r.at("phases").size(), 2u);
+  for (const char* phase : {"water", "soil"}) {
+    const auto& mass = r.at("phases").at(phase).at("mass");
+    EXPECT_LT(mass.at("relative_imbalance").get<double>(), 1e-12) << phase << " " << mass.dump();
+  }
+  EXPECT_TRUE(r.at("interaction").at("evaluations").get<double>() > 0);
+  const auto& ledger = r.at("ledger");
+  EXPECT_GT(ledger.at("impulse_magnitude_sum").get<double>(), 0.0);
+  EXPECT_LT(ledger.at("relative_imbalance").get<double>(), 1e-10) << ledger.dump();
+  const auto series = validation::read_timeseries(run.out);
+  for (const char* column : {"water_overlap", "soil_overlap", "soil_water_pairs",
+                             "impulse_to_soil_y", "impulse_to_water_y"}) {
+    EXPECT_TRUE(series.columns.count(column)) << "timeseries.csv lacks " << column;
+  }
+  EXPECT_GT(series.column("soil_water_pairs").back(), 0.0);
+  EXPECT_TRUE(std::filesystem::exists(run.out + "/fluid.h5"));
+  EXPECT_TRUE(std::filesystem::exists(run.out + "/soil.h5"));
+  const auto problems = test::check_xdmf_references(run.out + "/run.xdmf");
+  EXPECT_TRUE(problems.empty()) << problems.front();
+}
+
+// Gravity-driven water through a fixed Kozeny-Carman block, periodic: unit gradient, so the steady
+// velocity is K = 1 / a (9.69 mm/s). Measured 0.11 % at t = 0.05 s (~50 relaxation times, ~6 s);
+// the issue's bound is 2 %.
+TEST(SeepageCases, DarcyColumnFollowsDarcysLaw) {
+  const auto run = run_case("darcy_column", {});
+  expect_coupled_run_directory(run);
+  const auto c = validation::check_darcy_column(run.out);
+  EXPECT_EQ(c.seepage, "darcy_kozeny_carman");
+  EXPECT_LE(c.rel_error, 0.02) << "simulated " << c.simulated << " expected " << c.expected;
+  EXPECT_LT(c.settling, 1e-3);  // steady: the last output changed q by 1.1e-4 (measured)
+}
+
+// Forchheimer / Den Adel: i = a q + b q^2 = 1 with the quadratic term 62 % of i (the issue asks
+// for at least a third). Measured 0.06 % at t = 0.1 s (~14 s); bound 2 %.
+TEST(SeepageCases, ForchheimerColumnFollowsDenAdel) {
+  const auto run = run_case_scene("darcy_column", "scene_forchheimer.toml", {});
+  expect_coupled_run_directory(run);
+  const auto c = validation::check_darcy_column(run.out);
+  EXPECT_EQ(c.seepage, "forchheimer_den_adel");
+  EXPECT_GE(c.quadratic_share, 1.0 / 3.0);
+  EXPECT_LE(c.rel_error, 0.02) << "simulated " << c.simulated << " expected " << c.expected;
+}
+
+// The paper's bed at its own resolution for 300 steps: free sand, fixed filters, free water,
+// inflow and outflow; every conservation figure and the contract.
+TEST(SeepageCases, FluidizedBedShortened) {
+  const auto run = run_case("fluidized_bed", {"run.max_steps=300", "run.output_interval=1e-4"});
+  expect_coupled_run_directory(run);
+  const auto& soil = run.record.at("phases").at("soil");
+  EXPECT_EQ(soil.at("mass").at("final").get<double>(), soil.at("mass").at("initial").get<double>());
+}
+
+// The fluidised bed at dp = 2 mm with the flow ramped in 1 s instead of 12 s and the soil 25x
+// softer (the equilibrium porosity depends on the drag and the submerged weight, not on E; the
+// soil's elastic wave speed then no longer sets dt): ~100 s. Measured at t = 4 s: steady porosity
+// 0.510 (paper 0.508, experiment 0.51), effective stress down to 7 % of the settled bed's, onset
+// (effective stress below 10 %) at 0.106 l/s. Bounds: the issue's 0.51 +- 0.02 and 0.07-0.12 l/s;
+// the effective stress must have fallen below a third (a bed that carries its weight on its grains
+// is not fluidised).
+TEST(SeepageCases, FluidizedBedExpandsToThePaperPorosity) {
+  const std::vector<std::string> quick = {
+      "run.dp=0.002", "run.dt0=1e-4", "run.end_time=4.0", "run.output_interval=0.1",
+      "water.inflow.0.ramp_time=1.0", "soil.materials.0.young_modulus=0.2e6",
+      "soil.materials.1.young_modulus=0.2e6", "soil.materials.2.young_modulus=0.2e6"};
+  const auto run = run_case("fluidized_bed", quick, 600);
+  expect_coupled_run_directory(run);
+  const auto c = validation::check_fluidized_bed(run.out, 1.0);
+  EXPECT_TRUE(c.porosity_in_target) << "steady porosity " << c.steady_porosity;
+  EXPECT_TRUE(c.onset_in_target) << "onset at " << c.onset_flow_rate << " m^3/s";
+  EXPECT_LT(c.stress_ratio, 1.0 / 3.0);
+  EXPECT_GT(c.bed_height_final, c.bed_height_initial + 0.001);  // the bed has risen
+}
+
+}  // namespace
+}  // namespace porosph::testing

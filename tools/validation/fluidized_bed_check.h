@@ -1,0 +1,41 @@
+// Comparison of a finished fluidized_bed run with the seed paper's section 4.1 (issue 4).
+#pragma once
+
+#include <string>
+
+namespace porosph::validation {
+
+/// Reads the observables sand_porosity, bed_height and sand_stress_yy of timeseries.csv and the
+/// inflow ramp of run.json. Definitions (docs/validation.md):
+/// - steady porosity: mean of sand_porosity over the last `steady_window` seconds of the run;
+///   its drift is the change of the window's second half mean against its first half mean.
+/// - onset of fluidisation (incipient fluidisation: the drag carries the submerged weight): the
+///   first output at which the mean vertical effective stress of the lower sand has fallen below
+///   10 % of its settled value; the flow rate there from the ramp
+///   Q(t) = Q_max min(1, (t - t_start) / t_ramp).
+/// - onset of expansion: the first output at which the mean sand porosity has risen by 0.005
+///   above its value when the flow started (the bed has grown by ~1 % in volume).
+/// - effective stress ratio: mean of sand_stress_yy over the steady window divided by its value
+///   at the first output after the flow started (the settled bed, Q ~ 0).
+struct FluidizedBedCheck {
+  double time = 0;                ///< end of the run [s]
+  double steady_window = 0;       ///< [s]
+  double steady_porosity = 0;     ///< mean over the window
+  double porosity_drift = 0;      ///< second half minus first half of the window
+  double initial_porosity = 0;    ///< when the flow started
+  double bed_height_initial = 0;  ///< top of the sand when the flow started [m]
+  double bed_height_final = 0;    ///< mean over the window [m]
+  double stress_initial = 0;      ///< sand_stress_yy when the flow started [Pa]
+  double stress_ratio = 0;        ///< steady / initial effective vertical stress
+  double onset_time = -1;         ///< effective stress below 10 % [s]; < 0: never
+  double onset_flow_rate = -1;    ///< [m^3/s]; < 0: never
+  double expansion_time = -1;       ///< porosity +0.005 [s]; < 0: never
+  double expansion_flow_rate = -1;  ///< [m^3/s]; < 0: never
+  double max_flow_rate = 0;       ///< Q_max of the ramp [m^3/s]
+  bool porosity_in_target = false;  ///< 0.51 +- 0.02
+  bool onset_in_target = false;     ///< 0.07 .. 0.12 l/s
+};
+
+FluidizedBedCheck check_fluidized_bed(const std::string& run_dir, double steady_window = 1.0);
+
+}  // namespace porosph::validation
