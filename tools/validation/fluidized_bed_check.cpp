@@ -59,6 +59,9 @@ FluidizedBedCheck check_fluidized_bed(const std::string& run_dir, double steady_
   out.porosity_drift =
       window_mean(t, porosity, w_mid, out.time) - window_mean(t, porosity, w0, w_mid);
   out.bed_height_final = window_mean(t, height, w0, out.time);
+  out.bed_rise_rate =
+      (window_mean(t, height, w_mid, out.time) - window_mean(t, height, w0, w_mid)) /
+      (0.5 * out.steady_window);
   out.stress_ratio = window_mean(t, stress, w0, out.time) / out.stress_initial;
   for (std::size_t i = first; i < t.size(); ++i) {
     if (out.onset_time < 0 && std::abs(stress[i]) < 0.1 * std::abs(out.stress_initial)) {

@@ -25,6 +25,7 @@ struct FluidizedBedCheck {
   double initial_porosity = 0;    ///< when the flow started
   double bed_height_initial = 0;  ///< top of the sand when the flow started [m]
   double bed_height_final = 0;    ///< mean over the window [m]
+  double bed_rise_rate = 0;       ///< (second half - first half mean) / (window / 2) [m/s]
   double stress_initial = 0;      ///< sand_stress_yy when the flow started [Pa]
   double stress_ratio = 0;        ///< steady / initial effective vertical stress
   double onset_time = -1;         ///< effective stress below 10 % [s]; < 0: never

@@ -63,10 +63,10 @@ int report_fluidized_bed(const porosph::validation::FluidizedBedCheck& c) {
       "fluidized_bed at t = %.2f s (flow ramped to %.3f l/s)\n"
       "steady mean sand porosity (last %.2f s) %.4f, drift %+.4f; at the start %.4f"
       " (target 0.51 +- 0.02; experiment 0.51, paper's SPH 0.508)\n"
-      "bed height %.4f m -> %.4f m\n"
+      "bed height %.4f m -> %.4f m, rising at %.3f mm/s\n"
       "vertical effective stress %.1f Pa -> %.3f x (experiment: about 1/3)\n",
       c.time, 1e3 * c.max_flow_rate, c.steady_window, c.steady_porosity, c.porosity_drift,
-      c.initial_porosity, c.bed_height_initial, c.bed_height_final, c.stress_initial,
+      c.initial_porosity, c.bed_height_initial, c.bed_height_final, 1e3 * c.bed_rise_rate, c.stress_initial,
       c.stress_ratio);
   if (c.onset_flow_rate >= 0) {
     std::printf("onset of fluidisation (effective stress < 10 %%) at t = %.2f s, Q = %.4f l/s"
