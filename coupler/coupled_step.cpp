@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include "coupler/interaction/overlap_region.h"
 
@@ -34,7 +35,11 @@ CoupledStepLoop::CoupledStepLoop(const scene::Scene& scene, SolverHub& hub, RunR
       phases_(scene.phases()),
       controller_(scene.run.dt0, scene.run.dt_smoothing) {
   if (scene.has_water() && scene.has_soil()) {
-    interaction_ = std::make_unique<SoilWaterInteraction>(scene);
+    // The solvers compute their own rates while the coupler sums the interaction
+    // (proto/solver_runtime.h): leave them their cores. Threads beyond the cores only wait.
+    const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    const int solvers = static_cast<int>(phases_.size());
+    interaction_ = std::make_unique<SoilWaterInteraction>(scene, std::max(1, cores - solvers));
     record_.interaction.active = true;
   }
   timeseries_ =

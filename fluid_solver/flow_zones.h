@@ -80,8 +80,7 @@ class FlowZones {
   /// replacement (fresh ids from next_id, which advances) into the free range. volume = dp^D.
   /// Returns the number of particles born and adds their mass to `born_mass`. Allocates only when
   /// P must grow beyond its capacity (it then reserves one zone-load ahead).
-  std::size_t renew(FluidParticles<D>& P, double volume, std::int64_t& next_id,
-                    double& born_mass);
+  std::size_t renew(FluidParticles<D>& P, double volume, std::int64_t& next_id, double& born_mass);
 
  private:
   struct Box {

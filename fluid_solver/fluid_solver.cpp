@@ -131,10 +131,6 @@ void FluidSolver<D>::fill_state(coupling::StepState& out, const std::vector<doub
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
   out.step = step_;
   out.time = time_;
-  out.dt_cfl = limits_.cfl;
-  out.dt_viscous = limits_.viscous;
-  out.dt_force = limits_.force;
-  out.dt_limit = limits_.min();
 
   // Overlap set.
   overlap_index_.clear();
@@ -189,6 +185,13 @@ void FluidSolver<D>::fill_state(coupling::StepState& out, const std::vector<doub
   d.mass = mass;
   d.kinetic_energy = energy;
   d.max_speed = std::sqrt(max_v2);
+  // The state is reported before its rates are computed (solver_runtime.h): the CFL limit of the
+  // current speeds, eq. 21 and the viscous limit of the latest rates.
+  limits_.cfl = sph::cfl_limit(params_.cfl, params_.h, params_.eos.c0(), d.max_speed);
+  out.dt_cfl = limits_.cfl;
+  out.dt_viscous = limits_.viscous;
+  out.dt_force = limits_.force;
+  out.dt_limit = limits_.min();
   d.momentum.assign(momentum, momentum + D);
   const sph::ParticleView<D> view{P.position.data(), P.velocity.data(), P.mass.data(),
                                   P.pressure.data(), P.n_free,          P.density.data()};

@@ -1,7 +1,7 @@
 // The water phase solver (weakly compressible SPH, seed paper eq. 2-4 and 21): owns the water and
 // wall particles, computes the internal accelerations, reports its state to the coupler and
-// integrates with the shared dt. The coupling loop (fluid_solver/main.cpp) drives it:
-//   compute_rates(); fill_state(state, ...); <exchange>; add_interaction(a); advance(dt);
+// integrates with the shared dt. The coupling loop (proto/solver_runtime.h) drives it:
+//   fill_state(state, ...); <send>; compute_rates(); <receive>; add_interaction(a); advance(dt);
 #pragma once
 
 #include <cstdint>
@@ -106,7 +106,7 @@ class FluidSolver {
   std::uint64_t born_count_ = 0;
   double inflow_mass_ = 0.0;   ///< mass of the particles born in inflow zones so far [kg]
   double outflow_mass_ = 0.0;  ///< mass of the particles removed so far [kg]
-  std::int64_t next_id_ = 0;  ///< id of the next particle born in an inflow zone
+  std::int64_t next_id_ = 0;   ///< id of the next particle born in an inflow zone
   bool filtered_this_step_ = false;
   bool interaction_fresh_ = false;    ///< add_interaction called since the last advance
   bool interaction_nonzero_ = false;  ///< particles_.interaction may hold non-zero values

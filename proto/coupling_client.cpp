@@ -48,6 +48,7 @@ struct CouplingClient::Impl {
   std::string send_buffer;
   zmq::message_t reply;
   double communication_seconds = 0;
+  std::uint64_t last_sent_step = 0;  ///< step of the last state sent (for messages)
 
   /// Serialises `outgoing` and queues it (the DEALER queues while the coupler is not yet
   /// reachable).
@@ -146,16 +147,28 @@ CouplingClient::~CouplingClient() = default;
 const SetupData& CouplingClient::setup() const { return impl_->setup; }
 
 const StepCommand& CouplingClient::exchange(const StepState& state) {
+  send_state(state);
+  return receive_command();
+}
+
+void CouplingClient::send_state(const StepState& state) {
   Impl& d = *impl_;
   const auto start = Clock::now();
   wire::to_wire(state, *d.outgoing.mutable_state());
   d.send_outgoing(zmq::send_flags::dontwait);
+  d.last_sent_step = state.step;
+  d.communication_seconds += std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+const StepCommand& CouplingClient::receive_command() {
+  Impl& d = *impl_;
+  const auto start = Clock::now();
   const bool answered = d.receive_incoming(d.setup.timeout_seconds);
   d.communication_seconds += std::chrono::duration<double>(Clock::now() - start).count();
   if (!answered) {
     throw CouplingError("no answer from the coupler within " +
                         format_seconds(d.setup.timeout_seconds) + " s (step " +
-                        std::to_string(state.step) + ")");
+                        std::to_string(d.last_sent_step) + ")");
   }
   if (d.received != wire::Envelope::kCommand) d.throw_unexpected("StepCommand");
   wire::from_wire(d.command_message, d.command);

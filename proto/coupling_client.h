@@ -95,10 +95,17 @@ class CouplingClient {
 
   const SetupData& setup() const;
 
-  /// Sends the state, waits for the coupler's command. The returned reference stays valid until the
-  /// next call (its vectors are reused, so exchanging allocates nothing in steady state).
-  /// Throws CouplingError on Shutdown/Error from the coupler or on timeout.
+  /// Sends the state, waits for the coupler's command: send_state() then receive_command().
   const StepCommand& exchange(const StepState& state);
+
+  /// Sends the state without waiting: the solver may work (e.g. compute its own rates) while the
+  /// coupler computes the interaction; then receive_command(). Allocates nothing in steady state.
+  void send_state(const StepState& state);
+
+  /// Waits for the coupler's answer to the last state sent. The returned reference stays valid
+  /// until the next call (its vectors are reused). Throws CouplingError on Shutdown/Error from the
+  /// coupler or on timeout.
+  const StepCommand& receive_command();
 
   /// Tells the coupler this solver failed (NaN, bad input...). Does not throw.
   void report_error(const std::string& message, std::uint64_t step, double time,

@@ -1,6 +1,10 @@
 // The step loop every built-in solver runs against the coupler (DESIGN.md section 1):
-//   compute own rates -> report state + dt limit -> receive the shared dt, interaction, flags ->
-//   write output if asked -> add interaction -> advance.
+//   report state + dt limit -> compute own rates (while the coupler computes the interaction from
+//   the same state) -> receive the shared dt, interaction, flags -> write output if asked ->
+//   add interaction -> advance.
+// The state sent carries the dt limits of the latest rates (eq. 21 with the total acceleration of
+// the previous step, DESIGN.md section 1) and the CFL limit of the current speeds; the rates of the
+// initial state are computed before the first report.
 // A solver type plugs in by providing: compute_rates(), fill_state(StepState&, min, max),
 // find_non_finite(std::int64_t*), add_interaction(const std::vector<double>&), advance(double),
 // snapshot_fields(), time(), step(); a soil solver also set_saturation(const std::vector<double>&).
@@ -37,33 +41,63 @@ int run_solver_loop(CouplingClient& client, Solver& solver, io::SnapshotWriter& 
   double physics_seconds = 0.0;
   StepState state;
   std::vector<double> overlap_min, overlap_max;
-  for (;;) {
-    const auto physics_start = Clock::now();
-    solver.compute_rates();
+  // A non-finite check; false (after telling the coupler, naming the particle) when the state
+  // went bad. Run on each new state before it is sent, and again on its rates.
+  const auto state_is_finite = [&]() {
     std::int64_t bad_particle = -1;
     if (auto problem = solver.find_non_finite(&bad_particle)) {
       client.report_error(*problem, solver.step(), solver.time(), bad_particle);
-      return 1;
+      return false;
     }
-    solver.fill_state(state, overlap_min, overlap_max);
-    const double physics_now = std::chrono::duration<double>(Clock::now() - physics_start).count();
-    physics_seconds += physics_now;
-    state.diagnostics.physics_seconds = physics_now;
+    return true;
+  };
+  const auto rates_are_finite = [&]() {
+    solver.compute_rates();
+    return state_is_finite();
+  };
+  // Physics wall time since the last report (reported with each state) and in all.
+  double physics_since_report = 0.0;
+  const auto timed = [&](auto&& work) {
+    const auto t0 = Clock::now();
+    const bool ok = work();
+    const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    physics_since_report += seconds;
+    physics_seconds += seconds;
+    return ok;
+  };
+  if (!timed(rates_are_finite)) return 1;
+  bool rates_pending = false;  // the rates of the current state are still to be computed
+  for (;;) {
+    if (rates_pending && !timed(state_is_finite)) return 1;
+    timed([&] {
+      solver.fill_state(state, overlap_min, overlap_max);
+      return true;
+    });
+    state.diagnostics.physics_seconds = physics_since_report;
+    physics_since_report = 0.0;
+    client.send_state(state);
+    // Overlaps with the coupler's interaction and the other solver's work.
+    if (rates_pending && !timed(rates_are_finite)) return 1;
 
-    const StepCommand& command = client.exchange(state);
-
-    const auto output_start = Clock::now();
-    if (command.write_output)
-      writer.write(command.output_index, solver.time(), solver.snapshot_fields());
-    if (command.stop) break;
-    overlap_min = command.other_region_min;
-    overlap_max = command.other_region_max;
-    if (!command.interaction_acceleration.empty()) {
-      solver.add_interaction(command.interaction_acceleration);
+    const StepCommand& command = client.receive_command();
+    if (command.stop) {
+      if (command.write_output)
+        writer.write(command.output_index, solver.time(), solver.snapshot_fields());
+      break;
     }
-    if constexpr (has_set_saturation<Solver>::value) solver.set_saturation(command.saturation);
-    solver.advance(command.dt);
-    physics_seconds += std::chrono::duration<double>(Clock::now() - output_start).count();
+    timed([&] {
+      if (command.write_output)
+        writer.write(command.output_index, solver.time(), solver.snapshot_fields());
+      overlap_min = command.other_region_min;
+      overlap_max = command.other_region_max;
+      if (!command.interaction_acceleration.empty()) {
+        solver.add_interaction(command.interaction_acceleration);
+      }
+      if constexpr (has_set_saturation<Solver>::value) solver.set_saturation(command.saturation);
+      solver.advance(command.dt);
+      return true;
+    });
+    rates_pending = true;
   }
   Timing timing;
   timing.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();

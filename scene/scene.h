@@ -63,7 +63,7 @@ struct Domain {
 
 /// A water inflow zone ([[water.inflow]]): particles inside move at speed_at(t) along direction.
 struct InflowZone {
-  std::vector<double> min, max;  ///< the box [m]
+  std::vector<double> min, max;   ///< the box [m]
   std::vector<double> direction;  ///< unit flow direction (along one axis)
   double speed = 0.0;             ///< full speed [m/s] (velocity, or flow_rate / cross_section)
   double start_time = 0.0;        ///< [s]

@@ -35,12 +35,14 @@ void add_soil_settings(SceneSchema& s) {
                        .fallback("2.55")
                        .above(0)
                        .doc("Exponent n of the artificial stress, f = (W(r) / W(dp))^n."));
-  s.keys.push_back(Key("soil.sound_speed", T::Float)
-                       .unit("m/s")
-                       .fallback("0.0")
-                       .at_least(0)
-                       .doc("Numerical sound speed (time-step limit, artificial viscosity); 0: "
-                            "from the stiffest material, max sqrt((K + 4 G / 3) / density) (the P-wave speed)."));
+  s.keys.push_back(
+      Key("soil.sound_speed", T::Float)
+          .unit("m/s")
+          .fallback("0.0")
+          .at_least(0)
+          .doc(
+              "Numerical sound speed (time-step limit, artificial viscosity); 0: "
+              "from the stiffest material, max sqrt((K + 4 G / 3) / density) (the P-wave speed)."));
   s.keys.push_back(
       Key("soil.initial_stress", T::String)
           .fallback("\"none\"")

@@ -163,8 +163,8 @@ double SoilPhase::stiffest_sound_speed() const {
   double fastest = 0.0;
   for (const SoilMaterial& m : materials)
     if (m.density > 0.0) {  // P-wave modulus K + 4G/3: the fastest elastic wave of the skeleton
-      fastest = std::max(
-          fastest, std::sqrt((m.bulk_modulus + 4.0 * m.shear_modulus / 3.0) / m.density));
+      fastest =
+          std::max(fastest, std::sqrt((m.bulk_modulus + 4.0 * m.shear_modulus / 3.0) / m.density));
     }
   return fastest;
 }

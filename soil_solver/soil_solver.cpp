@@ -175,12 +175,16 @@ void SoilSolver<D>::fill_state(coupling::StepState& out, const std::vector<doubl
   const SoilParticles<D>& P = particles_;
   out.step = step_;
   out.time = time_;
+  fill_soil_overlap(P, overlap_min, overlap_max, overlap_index_, out);
+  fill_soil_diagnostics(P, out.region_min, out.region_max, out.diagnostics);
+  // Reported before its rates are computed (solver_runtime.h): the CFL limit of the current
+  // speeds, eq. 21 of the latest rates.
+  limits_.cfl =
+      sph::cfl_limit(params_.cfl, params_.h, params_.sound_speed, out.diagnostics.max_speed);
   out.dt_cfl = limits_.cfl;
   out.dt_viscous = limits_.viscous;
   out.dt_force = limits_.force;
   out.dt_limit = limits_.min();
-  fill_soil_overlap(P, overlap_min, overlap_max, overlap_index_, out);
-  fill_soil_diagnostics(P, out.region_min, out.region_max, out.diagnostics);
   out.diagnostics.removed_count = removed_count_;
   out.diagnostics.outflow_mass = outflow_mass_;
   sph::ParticleView<D> view{P.position.data(), P.velocity.data(), P.mass.data(), nullptr, P.n_free};

@@ -2,7 +2,7 @@
 // 18-21; Bui et al. 2008): owns the soil and its fixed particles, computes the internal
 // accelerations, strain rates and stress rates, reports its state to the coupler and integrates
 // with the shared dt. The coupling loop (soil_solver/main.cpp, proto/solver_runtime.h) drives it:
-//   compute_rates(); fill_state(state, ...); <exchange>; add_interaction(a); advance(dt);
+//   fill_state(state, ...); <send>; compute_rates(); <receive>; add_interaction(a); advance(dt);
 //
 // Time integration (symplectic Euler): kick v += dt a(sigma^n) (minus the damping stage's D v);
 // strain rate, spin and drho/dt from the NEW velocities at the old positions (a second neighbour
@@ -102,7 +102,7 @@ class SoilSolver {
   double time_ = 0.0;
   std::uint64_t step_ = 0;
   std::uint64_t removed_count_ = 0;
-  double outflow_mass_ = 0.0;  ///< mass of the particles that left the domain so far [kg]
+  double outflow_mass_ = 0.0;      ///< mass of the particles that left the domain so far [kg]
   bool damping_released_ = false;  ///< velocities zeroed at the end of the damping stage
   bool interaction_fresh_ = false;
   bool interaction_nonzero_ = false;

@@ -18,15 +18,20 @@ struct DtLimits {
   double min() const { return std::min({cfl, viscous, force}); }
 };
 
+/// dt_cfl = C_cfl h / (c + |v|max).
+inline double cfl_limit(double c_cfl, double h, double sound_speed, double max_speed) {
+  return c_cfl * h / (sound_speed + max_speed);
+}
+
 inline DtLimits time_step_limits(double h, double sound_speed, double max_speed,
                                  double kinematic_viscosity, double max_acceleration, double c_cfl,
                                  double c_viscous, double c_a) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   DtLimits l;
-  l.cfl = c_cfl * h / (sound_speed + max_speed);
+  l.cfl = cfl_limit(c_cfl, h, sound_speed, max_speed);
   l.viscous = kinematic_viscosity > 0.0 ? c_viscous * h * h / kinematic_viscosity : inf;
   l.force = max_acceleration > 0.0 ? c_a * std::sqrt(h / max_acceleration) : inf;
   return l;
 }
 
-}  // namespace porosph::fluid
+}  // namespace porosph::sph

@@ -41,8 +41,9 @@ InteractionParameters parameters_from_scene(const scene::Scene& s) {
 }
 
 template <int D>
-std::unique_ptr<InteractionEngine> make_engine(const scene::Scene& s) {
+std::unique_ptr<InteractionEngine> make_engine(const scene::Scene& s, int threads) {
   InteractionParameters p = parameters_from_scene(s);
+  p.threads = threads;
   const sph::DomainBox<D> box = sph::DomainBox<D>::from_scene(s, 2.0 * s.h());
   if (s.run.kernel == "cubic_spline") {
     return std::make_unique<SoilWaterSums<D, sph::CubicSpline<D>>>(std::move(p), box);
@@ -55,15 +56,15 @@ std::unique_ptr<InteractionEngine> make_engine(const scene::Scene& s) {
 
 }  // namespace
 
-SoilWaterInteraction::SoilWaterInteraction(const scene::Scene& scene)
+SoilWaterInteraction::SoilWaterInteraction(const scene::Scene& scene, int threads)
     : dimension_(scene.run.dimension) {
   if (!scene.has_water() || !scene.has_soil()) {
     throw std::invalid_argument("soil-water interaction: the scene needs both water and soil");
   }
   if (dimension_ == 2) {
-    engine_ = make_engine<2>(scene);
+    engine_ = make_engine<2>(scene, threads);
   } else if (dimension_ == 3) {
-    engine_ = make_engine<3>(scene);
+    engine_ = make_engine<3>(scene, threads);
   } else {
     throw std::invalid_argument("soil-water interaction: run.dimension must be 2 or 3");
   }

@@ -51,7 +51,8 @@ class SoilWaterInteraction {
   /// (nu = viscosity / rho0), coupling.submerged_saturation, soil.damping_duration and every soil
   /// material's seepage law. Throws std::invalid_argument if the scene lacks water or soil or a
   /// material's seepage law cannot be evaluated (e.g. Kozeny-Carman with zero water viscosity).
-  explicit SoilWaterInteraction(const scene::Scene& scene);
+  /// `threads`: OpenMP threads of the pair sums (0: OpenMP's default).
+  explicit SoilWaterInteraction(const scene::Scene& scene, int threads = 0);
   ~SoilWaterInteraction();
   SoilWaterInteraction(const SoilWaterInteraction&) = delete;
   SoilWaterInteraction& operator=(const SoilWaterInteraction&) = delete;

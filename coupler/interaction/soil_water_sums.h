@@ -37,6 +37,7 @@ struct InteractionParameters {
   double c_a = 0.25;                  ///< eq. 21
   double unit_weight_water = 0.0;     ///< gamma_w = rho0_w |g| [N/m^3]
   double submerged_saturation = 0.8;  ///< coupling.submerged_saturation
+  int threads = 0;                    ///< OpenMP threads of the sums; 0: OpenMP's default
   std::vector<SoilMaterialTerms> materials;
 };
 
@@ -91,7 +92,7 @@ class SoilWaterSums final : public InteractionEngine {
     slot_b_.resize(n);
     slot_active_.resize(n);
     const std::int64_t count = static_cast<std::int64_t>(n);
-#pragma omp parallel for schedule(static) if (count >= kParallelFrom)
+#pragma omp parallel for schedule(static) if (count >= kParallelFrom) num_threads(threads())
     for (std::int64_t s = 0; s < count; ++s) {
       const std::size_t i = static_cast<std::size_t>(order[s]);
       slot_velocity_[s] = Eigen::Map<const Vec>(soil.overlap_velocity.data() + i * D);
@@ -113,7 +114,7 @@ class SoilWaterSums final : public InteractionEngine {
     constexpr int kStride = D + 1;  // per soil slot: F_i (D components), then s_i
     const std::int64_t n_water = static_cast<std::int64_t>(water.overlap_id.size());
     const std::size_t soil_values = grid_.size() * kStride;
-    const int max_threads = omp_get_max_threads();
+    const int max_threads = threads();
     if (static_cast<int>(partial_.size()) < max_threads) partial_.resize(max_threads);
     if (forces) {
       out.water_acceleration.resize(water.overlap_id.size() * D);
@@ -124,7 +125,7 @@ class SoilWaterSums final : public InteractionEngine {
     double force[D] = {}, magnitude = 0.0, a2_max = 0.0;
     threads_used_ = 1;
 #pragma omp parallel reduction(+ : pairs, force[:D], magnitude) reduction(max : a2_max) \
-    if (n_water >= kParallelFrom)
+    if (n_water >= kParallelFrom) num_threads(threads())
     {
       const int t = omp_get_thread_num();
 #pragma omp single
@@ -176,13 +177,13 @@ class SoilWaterSums final : public InteractionEngine {
     } else {
       out.soil_acceleration.clear();
     }
-    const int threads = threads_used_;
+    const int partials = threads_used_;  // per-thread buffers the water pass filled
     double force[D] = {}, magnitude = 0.0, a2_max = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : force[:D], magnitude) \
-    reduction(max : a2_max) if (n >= kParallelFrom)
+    reduction(max : a2_max) if (n >= kParallelFrom) num_threads(threads())
     for (std::int64_t s = 0; s < n; ++s) {
       double sums[kStride] = {};
-      for (int t = 0; t < threads; ++t) {
+      for (int t = 0; t < partials; ++t) {
         const double* part = partial_[t].data() + s * kStride;
         for (int k = 0; k < kStride; ++k) sums[k] += part[k];
       }
@@ -207,6 +208,9 @@ class SoilWaterSums final : public InteractionEngine {
     out.force_magnitude_sum += magnitude;
     max_a2 = std::max(max_a2, a2_max);
   }
+
+  /// The thread count of the parallel loops: InteractionParameters::threads, or OpenMP's default.
+  int threads() const { return p_.threads > 0 ? p_.threads : omp_get_max_threads(); }
 
   InteractionParameters p_;
   Kernel kernel_;

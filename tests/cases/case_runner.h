@@ -22,8 +22,9 @@ inline CaseRun run_case_scene(const std::string& name, const std::string& scene_
   CaseRun run;
   const std::string dir = fresh_dir("case-" + name + "-" + scene_file);
   run.out = dir + "/out";
-  std::vector<std::string> argv = {bin("coupler"), "run",   source("cases/" + name + "/" + scene_file),
-                                   "--out",        run.out, "--no-progress"};
+  std::vector<std::string> argv = {
+      bin("coupler"), "run",   source("cases/" + name + "/" + scene_file),
+      "--out",        run.out, "--no-progress"};
   for (const auto& o : overrides) argv.insert(argv.end(), {"--set", o});
   run.result = run_process(argv, dir + "/log.txt", timeout_seconds);
   if (std::filesystem::exists(run.out + "/run.json")) run.record = read_json(run.out + "/run.json");

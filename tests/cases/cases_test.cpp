@@ -17,15 +17,16 @@ void expect_water_run_directory(const CaseRun& run, std::size_t outputs) {
   ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
   const auto& r = run.record;
   EXPECT_EQ(r.at("status"), "completed");
-  for (const char* key : {"scene", "parameters", "steps", "simulated_time", "wall_seconds", "phases",
-                          "dt", "ledger", "observables"}) {
+  for (const char* key : {"scene", "parameters", "steps", "simulated_time", "wall_seconds",
+                          "phases", "dt", "ledger", "observables"}) {
     EXPECT_TRUE(r.contains(key)) << "run.json lacks " << key;
   }
   const auto& water = r.at("phases").at("water");
   EXPECT_GT(water.at("particles").at("free").get<double>(), 0);
   // Mass: no particle leaves a closed tank, so the free mass is exactly conserved (same particles,
   // same masses; only round-off in the sum).
-  EXPECT_NEAR(water.at("mass").at("final").get<double>(), water.at("mass").at("initial").get<double>(),
+  EXPECT_NEAR(water.at("mass").at("final").get<double>(),
+              water.at("mass").at("initial").get<double>(),
               1e-9 * water.at("mass").at("initial").get<double>());
   EXPECT_EQ(r.at("ledger").at("relative_imbalance").get<double>(), 0.0);
 
@@ -74,9 +75,10 @@ TEST(Cases, HydrostaticTankShortened) {
 // The full 2 s of the hydrostatic tank at dp = 0.02 m (30 x 20 particles, ~6,000 steps).
 // Measured at this coarse spacing (OpenMP order makes runs differ): row-mean pressure 0.9-2.3%
 // off rho g (H - z), per-particle error 2.4-3.9% (third row from the surface, inside the
-// kernel support of the free surface), max speed ~1.1% of sqrt(g H). The 2% / 1% targets are
-// met at dp = 0.01 for the profile, not per particle (docs/validation.md). The bounds below keep
-// ~2x margin over those measurements and fail on any real regression of walls, initial density, EOS.
+// kernel support of the free surface), max speed ~1.1% of sqrt(g H). The 2% / 1% targets
+// are met at dp = 0.01 for the profile, not per particle (docs/validation.md). The bounds below
+// keep ~2x margin over those measurements and fail on any real regression of walls, initial
+// density, EOS.
 TEST(Cases, HydrostaticTankStaysHydrostaticForTwoSeconds) {
   const auto run = run_case("hydrostatic_tank", {"run.dp=0.02", "run.output_interval=0.5"});
   ASSERT_EQ(run.result.exit_code, 0) << run.result.output;

@@ -18,21 +18,21 @@ namespace porosph::validation {
 /// - effective stress ratio: mean of sand_stress_yy over the steady window divided by its value
 ///   at the first output after the flow started (the settled bed, Q ~ 0).
 struct FluidizedBedCheck {
-  double time = 0;                ///< end of the run [s]
-  double steady_window = 0;       ///< [s]
-  double steady_porosity = 0;     ///< mean over the window
-  double porosity_drift = 0;      ///< second half minus first half of the window
-  double initial_porosity = 0;    ///< when the flow started
-  double bed_height_initial = 0;  ///< top of the sand when the flow started [m]
-  double bed_height_final = 0;    ///< mean over the window [m]
-  double bed_rise_rate = 0;       ///< (second half - first half mean) / (window / 2) [m/s]
-  double stress_initial = 0;      ///< sand_stress_yy when the flow started [Pa]
-  double stress_ratio = 0;        ///< steady / initial effective vertical stress
-  double onset_time = -1;         ///< effective stress below 10 % [s]; < 0: never
-  double onset_flow_rate = -1;    ///< [m^3/s]; < 0: never
+  double time = 0;                  ///< end of the run [s]
+  double steady_window = 0;         ///< [s]
+  double steady_porosity = 0;       ///< mean over the window
+  double porosity_drift = 0;        ///< second half minus first half of the window
+  double initial_porosity = 0;      ///< when the flow started
+  double bed_height_initial = 0;    ///< top of the sand when the flow started [m]
+  double bed_height_final = 0;      ///< mean over the window [m]
+  double bed_rise_rate = 0;         ///< (second half - first half mean) / (window / 2) [m/s]
+  double stress_initial = 0;        ///< sand_stress_yy when the flow started [Pa]
+  double stress_ratio = 0;          ///< steady / initial effective vertical stress
+  double onset_time = -1;           ///< effective stress below 10 % [s]; < 0: never
+  double onset_flow_rate = -1;      ///< [m^3/s]; < 0: never
   double expansion_time = -1;       ///< porosity +0.005 [s]; < 0: never
   double expansion_flow_rate = -1;  ///< [m^3/s]; < 0: never
-  double max_flow_rate = 0;       ///< Q_max of the ramp [m^3/s]
+  double max_flow_rate = 0;         ///< Q_max of the ramp [m^3/s]
   bool porosity_in_target = false;  ///< 0.51 +- 0.02
   bool onset_in_target = false;     ///< 0.07 .. 0.12 l/s
 };

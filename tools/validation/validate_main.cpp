@@ -66,12 +66,13 @@ int report_fluidized_bed(const porosph::validation::FluidizedBedCheck& c) {
       "bed height %.4f m -> %.4f m, rising at %.3f mm/s\n"
       "vertical effective stress %.1f Pa -> %.3f x (experiment: about 1/3)\n",
       c.time, 1e3 * c.max_flow_rate, c.steady_window, c.steady_porosity, c.porosity_drift,
-      c.initial_porosity, c.bed_height_initial, c.bed_height_final, 1e3 * c.bed_rise_rate, c.stress_initial,
-      c.stress_ratio);
+      c.initial_porosity, c.bed_height_initial, c.bed_height_final, 1e3 * c.bed_rise_rate,
+      c.stress_initial, c.stress_ratio);
   if (c.onset_flow_rate >= 0) {
-    std::printf("onset of fluidisation (effective stress < 10 %%) at t = %.2f s, Q = %.4f l/s"
-                " (target 0.07 .. 0.12 l/s)\n",
-                c.onset_time, 1e3 * c.onset_flow_rate);
+    std::printf(
+        "onset of fluidisation (effective stress < 10 %%) at t = %.2f s, Q = %.4f l/s"
+        " (target 0.07 .. 0.12 l/s)\n",
+        c.onset_time, 1e3 * c.onset_flow_rate);
   } else {
     std::printf("onset of fluidisation: none (the effective stress never fell below 10 %%)\n");
   }
