@@ -51,6 +51,7 @@ json diagnostics_json(const coupling::Diagnostics& d) {
   out["momentum"] = vector_json(d.momentum);
   out["kinetic_energy"] = number(d.kinetic_energy);
   out["max_speed"] = number(d.max_speed);
+  out["neighbours_per_particle"] = number(d.neighbours_per_particle);
   return out;
 }
 

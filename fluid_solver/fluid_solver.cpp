@@ -89,6 +89,7 @@ void FluidSolver<D>::compute_rates() {
   } else {
     build_neighbours();
   }
+  neighbours_per_particle_ = neighbours_.neighbours_per_free_particle();
   if (kernel_kind_ == KernelKind::CubicSpline) {
     compute_rates_with(cubic_);
   } else {
@@ -181,6 +182,7 @@ void FluidSolver<D>::fill_state(coupling::StepState& out, const std::vector<doub
   d.free_count = P.n_free;
   d.removed_count = removed_count_;
   d.inflow_mass = inflow_mass_;
+  d.neighbours_per_particle = neighbours_per_particle_;
   d.outflow_mass = outflow_mass_;
   d.mass = mass;
   d.kinetic_energy = energy;

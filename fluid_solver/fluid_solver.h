@@ -103,6 +103,7 @@ class FluidSolver {
   double time_ = 0.0;
   std::uint64_t step_ = 0;
   std::uint64_t removed_count_ = 0;
+  double neighbours_per_particle_ = 0.0;  ///< of the latest neighbour list (free particles)
   std::uint64_t born_count_ = 0;
   double inflow_mass_ = 0.0;   ///< mass of the particles born in inflow zones so far [kg]
   double outflow_mass_ = 0.0;  ///< mass of the particles removed so far [kg]

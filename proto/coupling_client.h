@@ -44,6 +44,7 @@ struct Diagnostics {
   std::map<std::string, double> observables;
   double physics_seconds = 0;
   double inflow_mass = 0, outflow_mass = 0;  ///< since t = 0: born in inflow zones, removed
+  double neighbours_per_particle = 0;        ///< mean neighbour count of a free particle
 };
 
 /// One solver's report after computing its accelerations for the current state.

@@ -29,6 +29,7 @@ void to_wire(const coupling::Diagnostics& in, Diagnostics& out) {
   out.set_physics_seconds(in.physics_seconds);
   out.set_inflow_mass(in.inflow_mass);
   out.set_outflow_mass(in.outflow_mass);
+  out.set_neighbours_per_particle(in.neighbours_per_particle);
   assign(out.mutable_momentum(), in.momentum);
   auto& observables = *out.mutable_observables();
   // Update in place (no node churn when the names stay the same), then drop stale names.
@@ -50,6 +51,7 @@ void from_wire(const Diagnostics& in, coupling::Diagnostics& out) {
   out.physics_seconds = in.physics_seconds();
   out.inflow_mass = in.inflow_mass();
   out.outflow_mass = in.outflow_mass();
+  out.neighbours_per_particle = in.neighbours_per_particle();
   assign(out.momentum, in.momentum());
   for (const auto& [name, value] : in.observables()) {
     auto it = out.observables.find(name);

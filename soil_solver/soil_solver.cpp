@@ -142,6 +142,7 @@ void SoilSolver<D>::compute_rates() {
   } else {
     build_neighbours();
   }
+  neighbours_per_particle_ = neighbours_.neighbours_per_free_particle();
   if (kernel_kind_ == KernelKind::CubicSpline) {
     compute_rates_with(cubic_);
   } else {
@@ -187,6 +188,7 @@ void SoilSolver<D>::fill_state(coupling::StepState& out, const std::vector<doubl
   out.dt_limit = limits_.min();
   out.diagnostics.removed_count = removed_count_;
   out.diagnostics.outflow_mass = outflow_mass_;
+  out.diagnostics.neighbours_per_particle = neighbours_per_particle_;
   sph::ParticleView<D> view{P.position.data(), P.velocity.data(), P.mass.data(), nullptr, P.n_free};
   view.density = P.density.data();
   view.porosity = P.porosity.data();

@@ -102,6 +102,7 @@ class SoilSolver {
   double time_ = 0.0;
   std::uint64_t step_ = 0;
   std::uint64_t removed_count_ = 0;
+  double neighbours_per_particle_ = 0.0;  ///< of the latest neighbour list (free particles)
   double outflow_mass_ = 0.0;      ///< mass of the particles that left the domain so far [kg]
   bool damping_released_ = false;  ///< velocities zeroed at the end of the damping stage
   bool interaction_fresh_ = false;

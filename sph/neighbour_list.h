@@ -44,6 +44,15 @@ class NeighbourList {
   std::size_t size() const { return n_; }
   std::size_t free_size() const { return n_free_; }
   std::size_t pair_count() const { return pair_count_; }
+  /// Mean number of neighbours (free and fixed) of a free particle: the figure SPH throughput is
+  /// compared by. O(n_free).
+  double neighbours_per_free_particle() const {
+    if (n_free_ == 0) return 0.0;
+    std::size_t entries = 0;
+    for (std::size_t a = 0; a < n_free_; ++a)
+      entries += static_cast<std::size_t>(end_[a] - begin_[a]);
+    return static_cast<double>(entries) / static_cast<double>(n_free_);
+  }
   double support() const { return support_; }
 
   /// All neighbours of a: [begin(a), end(a)); free ones [begin(a), mid(a)), fixed [mid(a), end(a)).
