@@ -14,6 +14,7 @@
 #include "fluid_solver/flow_zones.h"
 #include "fluid_solver/fluid_params.h"
 #include "fluid_solver/fluid_particles.h"
+#include "io/checkpoint_file.h"
 #include "io/snapshot_writer.h"
 #include "proto/coupling_client.h"
 #include "scene/scene.h"
@@ -59,6 +60,14 @@ class FluidSolver {
   /// position, velocity, density, pressure, id (i64), fixed (u8) of every particle incl. walls;
   /// the views stay valid until the next compute_rates/advance.
   std::vector<io::FieldView> snapshot_fields() const;
+
+  /// Stores the whole state the integrator carries from step to step (every particle array, the
+  /// counters, time, step, next id, damping release, pending wall removal; fluid_checkpoint.cpp).
+  /// Call between advance() and the next compute_rates().
+  void write_checkpoint(io::CheckpointWriter& out);
+  /// Replaces the state with a checkpoint's (the solver must be built from the same scene); the
+  /// run then continues exactly as the one that wrote it. Throws std::runtime_error on a mismatch.
+  void restore_checkpoint(const io::CheckpointReader& in);
 
   double time() const { return time_; }
   std::uint64_t step() const { return step_; }
@@ -106,7 +115,7 @@ class FluidSolver {
   std::uint64_t born_count_ = 0;
   double inflow_mass_ = 0.0;   ///< mass of the particles born in inflow zones so far [kg]
   double outflow_mass_ = 0.0;  ///< mass of the particles removed so far [kg]
-  std::int64_t next_id_ = 0;  ///< id of the next particle born in an inflow zone
+  std::int64_t next_id_ = 0;   ///< id of the next particle born in an inflow zone
   bool filtered_this_step_ = false;
   bool interaction_fresh_ = false;    ///< add_interaction called since the last advance
   bool interaction_nonzero_ = false;  ///< particles_.interaction may hold non-zero values

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "io/checkpoint_file.h"
 #include "io/snapshot_writer.h"
 #include "proto/coupling_client.h"
 #include "scene/scene.h"
@@ -69,6 +70,15 @@ class SoilSolver {
   /// compute_rates/advance.
   std::vector<io::FieldView> snapshot_fields() const;
 
+  /// Stores the whole state the integrator carries from step to step (every particle array incl.
+  /// stress, porosity, plastic strain, displacement, saturation and wet flags; the counters, time,
+  /// step, damping release, pending wall removal; soil_checkpoint.cpp). Call between advance() and
+  /// the next compute_rates().
+  void write_checkpoint(io::CheckpointWriter& out);
+  /// Replaces the state with a checkpoint's (the solver must be built from the same scene); the
+  /// run then continues exactly as the one that wrote it. Throws std::runtime_error on a mismatch.
+  void restore_checkpoint(const io::CheckpointReader& in);
+
   double time() const { return time_; }
   std::uint64_t step() const { return step_; }
   std::size_t particle_count() const { return particles_.size(); }
@@ -102,7 +112,7 @@ class SoilSolver {
   double time_ = 0.0;
   std::uint64_t step_ = 0;
   std::uint64_t removed_count_ = 0;
-  double outflow_mass_ = 0.0;  ///< mass of the particles that left the domain so far [kg]
+  double outflow_mass_ = 0.0;      ///< mass of the particles that left the domain so far [kg]
   bool damping_released_ = false;  ///< velocities zeroed at the end of the damping stage
   bool interaction_fresh_ = false;
   bool interaction_nonzero_ = false;
