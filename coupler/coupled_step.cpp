@@ -23,8 +23,8 @@ double seconds_since(Clock::time_point start) {
 
 const char* axis_name(int k) { return k == 0 ? "x" : k == 1 ? "y" : "z"; }
 
-/// After a signal, how long the coupler waits for silent solvers before it gives up the checkpoint.
-constexpr double kSignalGraceSeconds = 5.0;
+/// After a signal, the longest the coupler waits for the solvers to reach the checkpoint.
+constexpr double kSignalGraceSeconds = 30.0;
 
 }  // namespace
 
@@ -83,9 +83,10 @@ std::vector<std::string> CoupledStepLoop::timeseries_columns() const {
 }
 
 void CoupledStepLoop::collect_states() {
-  // Once per step, not only when a receive times out: a SIGINT/SIGTERM or a dead solver must stop
-  // a run whose solvers answer every step too (a waitpid per solver, microseconds).
-  check_alive_();
+  // Signals are polled once per step after the states are in (handle_checkpoint_and_signal), so
+  // they stop a run whose solvers answer every step too. A dead solver never answers: the receive
+  // below times out and check_alive_ names it - after any Error it queued before exiting, which is
+  // the reason the user needs (checking it first here raced with that message).
   // received_ keeps its nodes between steps: resetting the flags allocates nothing.
   for (auto& [phase, flag] : received_) flag = false;
   std::size_t received_count = 0;
@@ -97,10 +98,12 @@ void CoupledStepLoop::collect_states() {
     // that message (not "exited with code N") is the reason the user needs.
     if (!hub_.receive(in, std::min(0.2, timeout))) {
       check_alive_();
-      if (const int signal = interrupt_signal_();
-          signal != 0 && seconds_since(last_heard) > std::min(timeout, kSignalGraceSeconds)) {
+      poll_signal();  // a second signal while waiting stops at once
+      const int signal = pending_signal_ != 0 ? pending_signal_ : stopping_signal_;
+      if (signal != 0 && seconds_since(signal_seen_) > kSignalGraceSeconds) {
         throw std::runtime_error("interrupted by signal " + std::to_string(signal) +
-                                 "; no checkpoint: the solvers did not reach a step boundary");
+                                 "; no checkpoint: the solvers did not reach it within " +
+                                 std::to_string(static_cast<int>(kSignalGraceSeconds)) + " s");
       }
       if (seconds_since(last_heard) > timeout) {
         std::string silent;
@@ -327,7 +330,19 @@ void CoupledStepLoop::run(ProgressLine& progress) {
   progress.finish(record_.time, record_.steps);
 }
 
+void CoupledStepLoop::poll_signal() {
+  const int signal = interrupt_signal_();
+  if (signal == 0) return;
+  if (pending_signal_ != 0 || stopping_signal_ != 0) {
+    throw std::runtime_error("interrupted by signal " + std::to_string(signal) +
+                             " a second time; stopped without waiting for a checkpoint");
+  }
+  pending_signal_ = signal;
+  signal_seen_ = Clock::now();
+}
+
 bool CoupledStepLoop::handle_checkpoint_and_signal() {
+  poll_signal();
   if (checkpoints_.pending()) {
     const std::string problem = checkpoints_.complete(states_);
     if (!problem.empty()) {
@@ -341,12 +356,12 @@ bool CoupledStepLoop::handle_checkpoint_and_signal() {
       record_.checkpoint_index = checkpoints_.last_index();
       record_.checkpoint_time = checkpoints_.last_time();
       record_.checkpoint_step = checkpoints_.last_step();
-      if (stopping_signal_ != 0) stop_after_signal();
+      if (stopping_signal_ == 0 && pending_signal_ != 0) stopping_signal_ = pending_signal_;
+      if (stopping_signal_ != 0) stop_after_signal();  // a fresh checkpoint: no need for another
     }
   }
-  if (stopping_signal_ != 0) return false;
-  const int signal = interrupt_signal_();
-  if (signal == 0) return false;
+  if (pending_signal_ == 0 || stopping_signal_ != 0) return false;
+  const int signal = pending_signal_;
   if (record_.time > 0.0 && checkpoints_.enabled()) {
     stopping_signal_ = signal;
     return true;  // this step's command asks for the checkpoint

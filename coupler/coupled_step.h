@@ -8,6 +8,7 @@
 // then stops the solvers.
 #pragma once
 
+#include <chrono>
 #include <functional>
 #include <map>
 #include <memory>
@@ -28,9 +29,10 @@ namespace porosph::coupler {
 class CoupledStepLoop {
  public:
   /// `check_alive` throws when a solver process died; `interrupt_signal` returns the SIGINT /
-  /// SIGTERM received (0: none); `write_outputs` refreshes run.json and run.xdmf (called after
-  /// each output once the solvers have written it). `resumed`: the loop state of the checkpoint the
-  /// run resumes from (record already restored, record.checkpoint_index its index), or null.
+  /// SIGTERM received since its last call (0: none; a second one stops the run at once);
+  /// `write_outputs` refreshes run.json and run.xdmf (called after each output once the solvers
+  /// have written it). `resumed`: the loop state of the checkpoint the run resumes from (record
+  /// already restored, record.checkpoint_index its index), or null.
   CoupledStepLoop(const scene::Scene& scene, SolverHub& hub, RunRecord& record,
                   const std::string& out_dir, std::function<void()> check_alive,
                   std::function<int()> interrupt_signal, std::function<void()> write_outputs,
@@ -53,6 +55,8 @@ class CoupledStepLoop {
   /// (throws) once it is written. Returns whether a checkpoint must be forced on this step.
   bool handle_checkpoint_and_signal();
   [[noreturn]] void stop_after_signal();
+  /// Takes a new signal from interrupt_signal_; throws if one was already being handled.
+  void poll_signal();
   std::vector<std::string> timeseries_columns() const;
 
   const scene::Scene& scene_;
@@ -61,7 +65,9 @@ class CoupledStepLoop {
   std::function<void()> check_alive_;
   std::function<int()> interrupt_signal_;
   std::function<void()> write_outputs_;
-  int stopping_signal_ = 0;  ///< a signal arrived: checkpoint, then stop
+  int pending_signal_ = 0;   ///< a signal arrived, not yet acted upon
+  int stopping_signal_ = 0;  ///< the checkpoint of that signal is under way; then stop
+  std::chrono::steady_clock::time_point signal_seen_;
   LoopState loop_;
   CheckpointKeeper checkpoints_;
   std::vector<std::string> phases_;

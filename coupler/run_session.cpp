@@ -32,6 +32,7 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 /// Set by SIGINT/SIGTERM; the only process-wide state, as a signal handler can reach nothing else.
+/// The step loop takes (and clears) it, so that a second signal is seen as such.
 std::atomic<int> interrupt_signal{0};
 extern "C" void on_interrupt(int signal) { interrupt_signal.store(signal); }
 
@@ -339,7 +340,7 @@ int RunSession::run() {
     if (resumed_) write_outputs();  // run.xdmf lists the snapshots the checkpoint keeps
     CoupledStepLoop loop(
         scene_, *hub_, record_, out_dir_, [this] { check_solvers_alive(); },
-        [] { return interrupt_signal.load(); }, [this] { write_outputs(); },
+        [] { return interrupt_signal.exchange(0); }, [this] { write_outputs(); },
         resumed_ ? &*resumed_ : nullptr);
     ProgressLine progress(scene_.run.end_time, options_.progress);
     loop.run(progress);
