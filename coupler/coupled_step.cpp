@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -22,16 +24,23 @@ double seconds_since(Clock::time_point start) {
 
 const char* axis_name(int k) { return k == 0 ? "x" : k == 1 ? "y" : "z"; }
 
+/// After a signal, the longest the coupler waits for the solvers to reach the checkpoint.
+constexpr double kSignalGraceSeconds = 30.0;
+
 }  // namespace
 
 CoupledStepLoop::CoupledStepLoop(const scene::Scene& scene, SolverHub& hub, RunRecord& record,
                                  const std::string& out_dir, std::function<void()> check_alive,
-                                 std::function<void()> write_outputs)
+                                 std::function<int()> interrupt_signal,
+                                 std::function<void()> write_outputs, const LoopState* resumed)
     : scene_(scene),
       hub_(hub),
       record_(record),
       check_alive_(std::move(check_alive)),
+      interrupt_signal_(std::move(interrupt_signal)),
       write_outputs_(std::move(write_outputs)),
+      checkpoints_(scene, out_dir, scene.phases(), resumed ? record.checkpoint_index : 0,
+                   record.time),
       phases_(scene.phases()),
       controller_(scene.run.dt0, scene.run.dt_smoothing) {
   if (scene.has_water() && scene.has_soil()) {
@@ -42,8 +51,15 @@ CoupledStepLoop::CoupledStepLoop(const scene::Scene& scene, SolverHub& hub, RunR
     interaction_ = std::make_unique<SoilWaterInteraction>(scene, std::max(1, cores - solvers));
     record_.interaction.active = true;
   }
-  timeseries_ =
-      std::make_unique<io::TimeSeriesCsv>(out_dir + "/timeseries.csv", timeseries_columns());
+  const std::string csv = out_dir + "/timeseries.csv";
+  if (resumed) {  // rows after the checkpoint (a killed run wrote them) go
+    loop_ = *resumed;
+    controller_.restore(resumed->controller_dt);
+    timeseries_ =
+        std::make_unique<io::TimeSeriesCsv>(csv, timeseries_columns(), resumed->output_index);
+  } else {
+    timeseries_ = std::make_unique<io::TimeSeriesCsv>(csv, timeseries_columns());
+  }
 }
 
 std::vector<std::string> CoupledStepLoop::timeseries_columns() const {
@@ -72,9 +88,10 @@ std::vector<std::string> CoupledStepLoop::timeseries_columns() const {
 }
 
 void CoupledStepLoop::collect_states() {
-  // Once per step, not only when a receive times out: a SIGINT/SIGTERM or a dead solver must stop
-  // a run whose solvers answer every step too (a waitpid per solver, microseconds).
-  check_alive_();
+  // Signals are polled once per step after the states are in (handle_checkpoint_and_signal), so
+  // they stop a run whose solvers answer every step too. A dead solver never answers: the receive
+  // below times out and check_alive_ names it - after any Error it queued before exiting, which is
+  // the reason the user needs (checking it first here raced with that message).
   // received_ keeps its nodes between steps: resetting the flags allocates nothing.
   for (auto& [phase, flag] : received_) flag = false;
   std::size_t received_count = 0;
@@ -86,6 +103,13 @@ void CoupledStepLoop::collect_states() {
     // that message (not "exited with code N") is the reason the user needs.
     if (!hub_.receive(in, std::min(0.2, timeout))) {
       check_alive_();
+      poll_signal();  // a second signal while waiting stops at once
+      const int signal = pending_signal_ != 0 ? pending_signal_ : stopping_signal_;
+      if (signal != 0 && seconds_since(signal_seen_) > kSignalGraceSeconds) {
+        throw std::runtime_error("interrupted by signal " + std::to_string(signal) +
+                                 "; no checkpoint: the solvers did not reach it within " +
+                                 std::to_string(static_cast<int>(kSignalGraceSeconds)) + " s");
+      }
       if (seconds_since(last_heard) > timeout) {
         std::string silent;
         for (const auto& phase : phases_) {
@@ -179,7 +203,7 @@ void CoupledStepLoop::append_timeseries_row(double dt) {
 }
 
 void CoupledStepLoop::send_commands(double dt, bool write_output, std::uint32_t output_index,
-                                    bool stop) {
+                                    bool stop, std::uint32_t checkpoint_index) {
   for (const std::string& phase : phases_) {
     coupling::StepCommand& command = commands_[phase];
     command.step = record_.steps;
@@ -188,6 +212,8 @@ void CoupledStepLoop::send_commands(double dt, bool write_output, std::uint32_t 
     command.write_output = write_output;
     command.output_index = output_index;
     command.stop = stop;
+    command.write_checkpoint = checkpoint_index > 0;
+    command.checkpoint_index = checkpoint_index;
     // A scene with a single phase exchanges no interaction (DESIGN.md section 1). The vectors
     // are assigned in place: their storage is reused from step to step.
     command.interaction_acceleration.clear();
@@ -250,23 +276,19 @@ void CoupledStepLoop::run(ProgressLine& progress) {
   const double end_time = scene_.run.end_time;
   const double interval = scene_.run.output_interval;
   const double end_tolerance = 1e-9 * end_time;
-  std::uint32_t output_index = 0;
-  double next_output_time = 0.0;
-  double last_output_time = -1.0;
-  bool outputs_pending = false;
+  const auto max_steps = static_cast<std::uint64_t>(std::max(0L, scene_.run.max_steps));
   for (;;) {
     collect_states();
     const auto work_start = Clock::now();
-    if (outputs_pending) {
+    if (loop_.outputs_pending) {
       write_outputs_();  // the solvers wrote their snapshot before sending this state
-      outputs_pending = false;
+      loop_.outputs_pending = false;
     }
-    const bool step_limit_reached =
-        scene_.run.max_steps > 0 &&
-        record_.steps >= static_cast<std::uint64_t>(scene_.run.max_steps);
+    const bool force_checkpoint = handle_checkpoint_and_signal();
+    const bool step_limit_reached = max_steps > 0 && record_.steps >= max_steps;
     const bool stop = record_.time >= end_time - end_tolerance || step_limit_reached;
-    bool write = record_.time >= next_output_time - 1e-9 * interval;
-    if (stop && last_output_time != record_.time) write = true;  // always a final snapshot
+    bool write = record_.time >= loop_.next_output_time - 1e-9 * interval;
+    if (stop && loop_.last_output_time != record_.time) write = true;  // always a final snapshot
     // Eq. 21 with the interaction of this step; the solvers' own dt_force already includes the
     // interaction of the previous step.
     const double dt_interaction = compute_interaction();
@@ -279,30 +301,91 @@ void CoupledStepLoop::run(ProgressLine& progress) {
     if (write) {
       for (const std::string& phase : phases_) {
         record_.phases[phase].snapshots.push_back(
-            {output_index, record_.time, states_.at(phase).diagnostics.particle_count});
+            {loop_.output_index, record_.time, states_.at(phase).diagnostics.particle_count});
       }
       append_timeseries_row(dt);  // cumulative impulses up to t: before this step's
-      last_output_time = record_.time;
+      loop_.last_output_time = record_.time;
     }
     if (interaction_ && interaction_summary_.forces) {
       const InteractionOutputs& o = interaction_->outputs();
       record_.ledger.add_step(dt, o.force_on_water, o.force_on_soil, o.force_magnitude_sum);
     }
-    send_commands(dt, write, output_index, stop);
+    const bool final_step = record_.time + dt >= end_time - end_tolerance ||
+                            (max_steps > 0 && record_.steps + 1 >= max_steps);
+    const bool checkpoint =
+        !stop && checkpoints_.due(record_.time, dt, final_step, force_checkpoint);
+    send_commands(dt, write, loop_.output_index, stop, checkpoint ? checkpoints_.begin() : 0);
     if (write) {
-      ++output_index;
-      next_output_time = output_index * interval;
-      outputs_pending = true;
+      ++loop_.output_index;
+      loop_.next_output_time = loop_.output_index * interval;
+      loop_.outputs_pending = true;
     }
     record_.coupler_seconds += seconds_since(work_start);
     if (stop) break;
     record_.time += dt;
     record_.steps += 1;
     record_.record_dt(dt);
+    if (checkpoint) {  // the state at the new step boundary, written once the solvers confirm
+      loop_.controller_dt = controller_.current();
+      checkpoints_.hold(coupler_state_json(record_, loop_), record_.time, record_.steps);
+    }
     progress.update(record_.time, record_.steps, dt);
   }
   wait_for_goodbyes();
   progress.finish(record_.time, record_.steps);
+}
+
+void CoupledStepLoop::poll_signal() {
+  const int signal = interrupt_signal_();
+  if (signal == 0) return;
+  if (pending_signal_ != 0 || stopping_signal_ != 0) {
+    throw std::runtime_error("interrupted by signal " + std::to_string(signal) +
+                             " a second time; stopped without waiting for a checkpoint");
+  }
+  pending_signal_ = signal;
+  signal_seen_ = Clock::now();
+}
+
+bool CoupledStepLoop::handle_checkpoint_and_signal() {
+  poll_signal();
+  if (checkpoints_.pending()) {
+    const std::string problem = checkpoints_.complete(states_);
+    if (!problem.empty()) {
+      checkpoints_.disable();
+      if (stopping_signal_ != 0) {
+        throw std::runtime_error("interrupted by signal " + std::to_string(stopping_signal_) +
+                                 "; no checkpoint written: " + problem);
+      }
+      std::fprintf(stderr, "coupler: checkpoints disabled: %s\n", problem.c_str());
+    } else {
+      record_.checkpoint_index = checkpoints_.last_index();
+      record_.checkpoint_time = checkpoints_.last_time();
+      record_.checkpoint_step = checkpoints_.last_step();
+      if (stopping_signal_ == 0 && pending_signal_ != 0) stopping_signal_ = pending_signal_;
+      if (stopping_signal_ != 0) stop_after_signal();  // a fresh checkpoint: no need for another
+    }
+  }
+  if (pending_signal_ == 0 || stopping_signal_ != 0) return false;
+  const int signal = pending_signal_;
+  if (record_.time > 0.0 && checkpoints_.enabled()) {
+    stopping_signal_ = signal;
+    return true;  // this step's command asks for the checkpoint
+  }
+  throw std::runtime_error("interrupted by signal " + std::to_string(signal) +
+                           (record_.time > 0.0 ? "; no checkpoint (checkpoints are disabled)"
+                                               : "; no checkpoint at t = 0"));
+}
+
+void CoupledStepLoop::stop_after_signal() {
+  send_commands(0.0, false, loop_.output_index, true);
+  wait_for_goodbyes();
+  std::ostringstream msg;
+  const std::string out_dir =
+      std::filesystem::path(checkpoints_.directory()).parent_path().string();
+  msg << "interrupted by signal " << stopping_signal_
+      << "; checkpoint at t = " << checkpoints_.last_time() << " s in " << checkpoints_.directory()
+      << " (resume with coupler run --resume " << out_dir << ")";
+  throw std::runtime_error(msg.str());
 }
 
 }  // namespace porosph::coupler

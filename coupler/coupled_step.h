@@ -2,14 +2,20 @@
 // collect every solver's state -> soil-water interaction (when both phases exist; its eq. 21
 // limit joins the solvers' dt limits) -> the one shared dt (TimeStepController) -> output / stop
 // flags -> conservation ledger -> send every solver its command (dt, interaction accelerations,
-// saturation, and the overlap zone it must report next step).
+// saturation, and the overlap zone it must report next step). Checkpoints (coupler/checkpoint.h):
+// the command advancing to a checkpoint's step boundary carries write_checkpoint; the states that
+// follow confirm it and the coupler writes its part. A SIGINT/SIGTERM past t = 0 forces one and
+// then stops the solvers.
 #pragma once
 
+#include <chrono>
 #include <functional>
 #include <map>
 #include <memory>
 #include <string>
 
+#include "coupler/checkpoint.h"
+#include "coupler/checkpoint_state.h"
 #include "coupler/interaction/soil_water_interaction.h"
 #include "coupler/progress_line.h"
 #include "coupler/run_record.h"
@@ -22,11 +28,15 @@ namespace porosph::coupler {
 
 class CoupledStepLoop {
  public:
-  /// `check_alive` throws when a solver process died or the run was interrupted; `write_outputs`
-  /// refreshes run.json and run.xdmf (called after each output once the solvers have written it).
+  /// `check_alive` throws when a solver process died; `interrupt_signal` returns the SIGINT /
+  /// SIGTERM received since its last call (0: none; a second one stops the run at once);
+  /// `write_outputs` refreshes run.json and run.xdmf (called after each output once the solvers
+  /// have written it). `resumed`: the loop state of the checkpoint the run resumes from (record
+  /// already restored, record.checkpoint_index its index), or null.
   CoupledStepLoop(const scene::Scene& scene, SolverHub& hub, RunRecord& record,
                   const std::string& out_dir, std::function<void()> check_alive,
-                  std::function<void()> write_outputs);
+                  std::function<int()> interrupt_signal, std::function<void()> write_outputs,
+                  const LoopState* resumed = nullptr);
 
   /// Runs to end_time and the solvers' Goodbye. Throws std::runtime_error on any failure.
   void run(ProgressLine& progress);
@@ -38,15 +48,28 @@ class CoupledStepLoop {
   double compute_interaction();
   void absorb_state(const std::string& phase, const coupling::StepState& state);
   void append_timeseries_row(double dt);
-  void send_commands(double dt, bool write_output, std::uint32_t output_index, bool stop);
+  void send_commands(double dt, bool write_output, std::uint32_t output_index, bool stop,
+                     std::uint32_t checkpoint_index = 0);
   void wait_for_goodbyes();
+  /// Completes the pending checkpoint with the states just collected; on a signal, stops the run
+  /// (throws) once it is written. Returns whether a checkpoint must be forced on this step.
+  bool handle_checkpoint_and_signal();
+  [[noreturn]] void stop_after_signal();
+  /// Takes a new signal from interrupt_signal_; throws if one was already being handled.
+  void poll_signal();
   std::vector<std::string> timeseries_columns() const;
 
   const scene::Scene& scene_;
   SolverHub& hub_;
   RunRecord& record_;
   std::function<void()> check_alive_;
+  std::function<int()> interrupt_signal_;
   std::function<void()> write_outputs_;
+  int pending_signal_ = 0;   ///< a signal arrived, not yet acted upon
+  int stopping_signal_ = 0;  ///< the checkpoint of that signal is under way; then stop
+  std::chrono::steady_clock::time_point signal_seen_;
+  LoopState loop_;
+  CheckpointKeeper checkpoints_;
   std::vector<std::string> phases_;
   TimeStepController controller_;
   std::unique_ptr<io::TimeSeriesCsv> timeseries_;

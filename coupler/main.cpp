@@ -1,8 +1,9 @@
 // coupler: the PoroSPH command line (DESIGN.md section 6).
-//   coupler run SCENE.toml [--out DIR] [--set key=value ...] [--fluid-solver EXE] [--soil-solver EXE]
-//   coupler run --attach --endpoint tcp://HOST:PORT SCENE.toml
-//   coupler check SCENE.toml [--set ...]     validate only, print the resolved scene
-//   coupler schema --markdown                the scene key reference (docs/scene.md)
+//   coupler run SCENE.toml [--out DIR] [--set key=value ...] [--fluid-solver EXE] [--soil-solver
+//   EXE] coupler run --attach --endpoint tcp://HOST:PORT SCENE.toml coupler run --resume DIR
+//   continue DIR's run from its latest checkpoint coupler check SCENE.toml [--set ...]     validate
+//   only, print the resolved scene coupler schema --markdown                the scene key reference
+//   (docs/scene.md)
 // Exit codes: 0 completed, 1 the run failed, 2 bad input.
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -36,7 +37,10 @@ int main(int argc, char** argv) {
   porosph::coupler::RunOptions run_options;
   bool no_progress = false;
   auto* run = app.add_subcommand("run", "run a scene and write the run directory");
-  run->add_option("scene", run_options.scene_path, "scene file (TOML)")->required();
+  run->add_option("scene", run_options.scene_path, "scene file (TOML)");
+  run->add_option("--resume", run_options.resume_dir,
+                  "continue the run in this directory from its latest checkpoint "
+                  "(docs/checkpoints.md)");
   run->add_option("--out", run_options.out_dir, "run directory (default runs/<scene name>)");
   run->add_option("--set", run_options.overrides, "override a scene key: key=value (repeatable)")
       ->take_all()
@@ -67,6 +71,18 @@ int main(int argc, char** argv) {
   }
 
   if (*run) {
+    if (run_options.resume_dir.empty() && run_options.scene_path.empty()) {
+      std::fprintf(stderr, "coupler: run needs a scene file (or --resume DIR)\n");
+      return porosph::coupler::kBadInput;
+    }
+    if (!run_options.resume_dir.empty() &&
+        (!run_options.scene_path.empty() || !run_options.out_dir.empty() ||
+         !run_options.overrides.empty())) {
+      std::fprintf(stderr,
+                   "coupler: --resume DIR takes the scene and the run directory from DIR's "
+                   "checkpoint: give no scene, --out or --set with it\n");
+      return porosph::coupler::kBadInput;
+    }
     if (run_options.attach && run_options.endpoint.empty()) {
       std::fprintf(stderr, "coupler: --attach needs --endpoint tcp://HOST:PORT\n");
       return porosph::coupler::kBadInput;

@@ -166,6 +166,11 @@ void write_run_json(const std::string& path, const RunRecord& r) {
   json observables = json::object();
   for (const auto& [name, value] : r.observables) observables[name] = number(value);
   out["observables"] = observables;
+  out["resumes"] = r.resumes;
+  out["checkpoint"] = r.checkpoint_index == 0 ? json(nullptr)
+                                              : json{{"index", r.checkpoint_index},
+                                                     {"time", number(r.checkpoint_time)},
+                                                     {"step", r.checkpoint_step}};
 
   const std::string tmp = path + ".tmp";
   {

@@ -79,6 +79,11 @@ struct RunRecord {
   ConservationLedger ledger;
   InteractionRecord interaction;
   std::map<std::string, double> observables;  ///< latest value of every observable
+  std::uint32_t resumes = 0;  ///< times this run was resumed from a checkpoint (--resume)
+  /// The latest checkpoint: index (0: none yet), simulated time and step.
+  std::uint32_t checkpoint_index = 0;
+  double checkpoint_time = 0;
+  std::uint64_t checkpoint_step = 0;
 
   void record_dt(double dt);
 };

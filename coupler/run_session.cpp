@@ -2,23 +2,26 @@
 
 #include <unistd.h>
 
-#include <atomic>
 #include <algorithm>
+#include <atomic>
 #include <chrono>
-#include <cstdlib>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <thread>
 
+#include "coupler/checkpoint.h"
 #include "coupler/coupled_step.h"
 #include "coupler/progress_line.h"
 #include "coupler/run_record.h"
 #include "coupler/solver_hub.h"
 #include "coupler/solver_process.h"
+#include "proto/checkpoint_names.h"
 #include "scene/scene_loader.h"
 
 namespace porosph::coupler {
@@ -29,6 +32,7 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 /// Set by SIGINT/SIGTERM; the only process-wide state, as a signal handler can reach nothing else.
+/// The step loop takes (and clears) it, so that a second signal is seen as such.
 std::atomic<int> interrupt_signal{0};
 extern "C" void on_interrupt(int signal) { interrupt_signal.store(signal); }
 
@@ -62,6 +66,10 @@ class RunSession {
 
  private:
   void prepare_output_dir();
+  /// --resume: the run directory, the record and loop state of its latest checkpoint, the scene.
+  void load_resume_point();
+  /// The scene from the file and --set, and a fresh run directory.
+  void load_fresh_run();
   void start_solvers();
   std::vector<std::pair<std::string, std::string>> solver_environment(
       const std::string& endpoint) const;
@@ -78,17 +86,75 @@ class RunSession {
   std::string out_dir_;
   std::unique_ptr<SolverHub> hub_;
   std::map<std::string, std::unique_ptr<SolverProcess>> processes_;
+  std::optional<LoopState> resumed_;  ///< set when resuming
+  double wall_seconds_before_ = 0;    ///< wall time of the run before the resume
 };
 
 void RunSession::prepare_output_dir() {
   out_dir_ = options_.out_dir.empty() ? "runs/" + scene_.name : options_.out_dir;
   std::error_code error;
   fs::create_directories(out_dir_, error);
-  if (error) throw BadInput("cannot create output directory '" + out_dir_ + "': " + error.message());
+  if (error)
+    throw BadInput("cannot create output directory '" + out_dir_ + "': " + error.message());
   out_dir_ = fs::absolute(out_dir_).lexically_normal().string();
   for (const char* stale : {"run.json", "timeseries.csv", "run.xdmf", "fluid.h5", "soil.h5"}) {
     fs::remove(fs::path(out_dir_) / stale, error);
   }
+  fs::remove_all(fs::path(out_dir_) / "checkpoint", error);  // never resume into another run
+}
+
+void RunSession::load_fresh_run() {
+  try {
+    scene_ = scene::load_scene_file(options_.scene_path, options_.overrides);
+  } catch (const scene::SceneError& e) {
+    throw BadInput(std::string("bad scene: ") + e.what());
+  }
+  record_.scene_name = scene_.name;
+  record_.scene_path = options_.scene_path;
+  record_.resolved_toml = scene_.resolved_toml;
+  record_.dimension = scene_.run.dimension;
+  record_.end_time = scene_.run.end_time;
+  record_.ledger = ConservationLedger(scene_.run.dimension);
+  prepare_output_dir();
+}
+
+void RunSession::load_resume_point() {
+  std::error_code error;
+  if (!fs::is_directory(options_.resume_dir, error)) {
+    throw BadInput("cannot resume: '" + options_.resume_dir + "' is not a run directory");
+  }
+  out_dir_ = fs::absolute(options_.resume_dir).lexically_normal().string();
+  LoopState loop;
+  std::optional<CheckpointManifest> manifest;
+  try {
+    manifest = load_latest_checkpoint(out_dir_, record_, loop);
+  } catch (const std::exception& e) {
+    throw BadInput(std::string("cannot resume: ") + e.what());
+  }
+  if (!manifest) {
+    throw BadInput("cannot resume: " + out_dir_ + " has no checkpoint (no " +
+                   coupling::checkpoint_dir(out_dir_) +
+                   "/latest.json; checkpoints come from run.checkpoint_interval, "
+                   "run.checkpoint_wall_minutes or a SIGINT/SIGTERM past t = 0)");
+  }
+  try {
+    scene_ = scene::load_scene_text(record_.resolved_toml, manifest->coupler_file);
+  } catch (const scene::SceneError& e) {
+    throw BadInput(std::string("cannot resume: bad scene in the checkpoint: ") + e.what());
+  }
+  for (const std::string& phase : scene_.phases()) {
+    if (!manifest->solvers.count(phase)) {
+      throw BadInput("cannot resume: the checkpoint has no " + phase + " solver state");
+    }
+  }
+  record_.status = "running";
+  record_.message.clear();
+  record_.resumes += 1;
+  wall_seconds_before_ = record_.wall_seconds;
+  resumed_ = loop;
+  std::fprintf(stderr, "coupler: resuming %s from checkpoint %u at t = %.9g s (step %llu)\n",
+               out_dir_.c_str(), manifest->index, manifest->time,
+               static_cast<unsigned long long>(manifest->step));
 }
 
 std::vector<std::pair<std::string, std::string>> RunSession::solver_environment(
@@ -109,8 +175,7 @@ std::vector<std::pair<std::string, std::string>> RunSession::solver_environment(
 }
 
 void RunSession::start_solvers() {
-  const std::string endpoint =
-      options_.endpoint.empty() ? fresh_ipc_endpoint() : options_.endpoint;
+  const std::string endpoint = options_.endpoint.empty() ? fresh_ipc_endpoint() : options_.endpoint;
   hub_ = std::make_unique<SolverHub>(endpoint);
   const std::string connect = hub_->connect_endpoint();
   if (options_.attach) {
@@ -138,8 +203,8 @@ void RunSession::start_solvers() {
       throw RunFailure(message);
     }
     try {
-      processes_[phase] = std::make_unique<SolverProcess>(executable, args,
-                                                          solver_environment(connect));
+      processes_[phase] =
+          std::make_unique<SolverProcess>(executable, args, solver_environment(connect));
     } catch (const std::exception& e) {
       if (user_named) throw BadInput(e.what());
       throw RunFailure(e.what());
@@ -219,6 +284,11 @@ void RunSession::handshake() {
     setup.end_time = scene_.run.end_time;
     setup.gravity = scene_.run.gravity;
     setup.timeout_seconds = timeout;
+    if (resumed_) {
+      setup.restore_checkpoint =
+          coupling::solver_checkpoint_path(out_dir_, phase, record_.checkpoint_index);
+      setup.resume_output_index = resumed_->output_index;
+    }
     hub_->send_setup(phase, setup);
   }
 }
@@ -239,7 +309,7 @@ void RunSession::shut_down_after_failure(const std::string& reason) {
 }
 
 void RunSession::write_outputs() {
-  record_.wall_seconds = seconds_since(started_);
+  record_.wall_seconds = wall_seconds_before_ + seconds_since(started_);
   std::vector<io::XdmfPhaseSeries> series;
   for (const auto& [phase, phase_record] : record_.phases) {
     if (phase_record.snapshots.empty()) continue;
@@ -252,19 +322,11 @@ void RunSession::write_outputs() {
 
 int RunSession::run() {
   try {
-    scene_ = scene::load_scene_file(options_.scene_path, options_.overrides);
-  } catch (const scene::SceneError& e) {
-    std::fprintf(stderr, "coupler: bad scene: %s\n", e.what());
-    return kBadInput;
-  }
-  record_.scene_name = scene_.name;
-  record_.scene_path = options_.scene_path;
-  record_.resolved_toml = scene_.resolved_toml;
-  record_.dimension = scene_.run.dimension;
-  record_.end_time = scene_.run.end_time;
-  record_.ledger = ConservationLedger(scene_.run.dimension);
-  try {
-    prepare_output_dir();
+    if (options_.resume_dir.empty()) {
+      load_fresh_run();
+    } else {
+      load_resume_point();
+    }
   } catch (const BadInput& e) {
     std::fprintf(stderr, "coupler: %s\n", e.what());
     return kBadInput;
@@ -275,12 +337,11 @@ int RunSession::run() {
   try {
     start_solvers();
     handshake();
-    CoupledStepLoop loop(scene_, *hub_, record_, out_dir_,
-                         [this] {
-                           check_interrupt();
-                           check_solvers_alive();
-                         },
-                         [this] { write_outputs(); });
+    if (resumed_) write_outputs();  // run.xdmf lists the snapshots the checkpoint keeps
+    CoupledStepLoop loop(
+        scene_, *hub_, record_, out_dir_, [this] { check_solvers_alive(); },
+        [] { return interrupt_signal.exchange(0); }, [this] { write_outputs(); },
+        resumed_ ? &*resumed_ : nullptr);
     ProgressLine progress(scene_.run.end_time, options_.progress);
     loop.run(progress);
     record_.status = "completed";
@@ -309,8 +370,8 @@ int RunSession::run() {
     std::fprintf(stderr,
                  "coupler: completed %llu steps to t = %.6g s in %.1f s wall time\n"
                  "coupler: results in %s (open run.xdmf in ParaView; run.json, timeseries.csv)\n",
-                 static_cast<unsigned long long>(record_.steps), record_.time,
-                 record_.wall_seconds, out_dir_.c_str());
+                 static_cast<unsigned long long>(record_.steps), record_.time, record_.wall_seconds,
+                 out_dir_.c_str());
   } else {
     std::fprintf(stderr, "coupler: run failed: %s\ncoupler: partial results in %s\n",
                  record_.message.c_str(), out_dir_.c_str());

@@ -8,19 +8,23 @@ namespace porosph::coupler {
 
 struct RunOptions {
   std::string scene_path;
-  std::string out_dir;  ///< default: runs/<scene name>
+  std::string out_dir;                 ///< default: runs/<scene name>
   std::vector<std::string> overrides;  ///< "--set a.b=value"
-  std::string fluid_solver;  ///< executable override for the water phase
-  std::string soil_solver;   ///< executable override for the soil phase
-  bool attach = false;       ///< solvers are started by hand and connect to `endpoint`
-  std::string endpoint;      ///< default: a fresh ipc:// path
+  std::string fluid_solver;            ///< executable override for the water phase
+  std::string soil_solver;             ///< executable override for the soil phase
+  bool attach = false;                 ///< solvers are started by hand and connect to `endpoint`
+  std::string endpoint;                ///< default: a fresh ipc:// path
   bool progress = true;
+  /// `coupler run --resume DIR`: continue the run in DIR from its latest checkpoint (scene_path,
+  /// out_dir and overrides unused: the scene is the one the checkpoint keeps).
+  std::string resume_dir;
 };
 
 /// Exit codes of the contract (DESIGN.md section 6).
 enum ExitCode { kCompleted = 0, kRunFailed = 1, kBadInput = 2 };
 
-/// Runs the scene; never throws. Writes OUT/run.json in every case where OUT could be created.
+/// Runs the scene (or resumes a run, RunOptions::resume_dir; docs/checkpoints.md); never throws.
+/// Writes OUT/run.json in every case where OUT could be created.
 int run_scene(const RunOptions& options);
 
 }  // namespace porosph::coupler

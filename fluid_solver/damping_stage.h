@@ -31,6 +31,9 @@ class DampingStage {
     released_ = true;
     return true;
   }
+  /// Whether release() has fired (checkpointed: a resumed run must not release twice).
+  bool released() const { return released_; }
+  void set_released(bool released) { released_ = released; }
 
  private:
   double duration_ = 0.0;

@@ -14,6 +14,7 @@
 #include "fluid_solver/flow_zones.h"
 #include "fluid_solver/fluid_params.h"
 #include "fluid_solver/fluid_particles.h"
+#include "io/checkpoint_file.h"
 #include "io/snapshot_writer.h"
 #include "proto/coupling_client.h"
 #include "scene/scene.h"
@@ -59,6 +60,14 @@ class FluidSolver {
   /// position, velocity, density, pressure, id (i64), fixed (u8) of every particle incl. walls;
   /// the views stay valid until the next compute_rates/advance.
   std::vector<io::FieldView> snapshot_fields() const;
+
+  /// Stores the whole state the integrator carries from step to step (every particle array, the
+  /// counters, time, step, next id, damping release, pending wall removal; fluid_checkpoint.cpp).
+  /// Call between advance() and the next compute_rates().
+  void write_checkpoint(io::CheckpointWriter& out);
+  /// Replaces the state with a checkpoint's (the solver must be built from the same scene); the
+  /// run then continues exactly as the one that wrote it. Throws std::runtime_error on a mismatch.
+  void restore_checkpoint(const io::CheckpointReader& in);
 
   double time() const { return time_; }
   std::uint64_t step() const { return step_; }

@@ -20,8 +20,8 @@ constexpr const char* kSolverVersion = "0.1.0";
 template <int D>
 int run_dimension(porosph::coupling::CouplingClient& client, const porosph::scene::Scene& scene) {
   porosph::fluid::FluidSolver<D> solver(scene);
-  porosph::io::SnapshotWriter writer(client.setup().output_dir + "/fluid.h5");
-  return porosph::coupling::run_solver_loop(client, solver, writer);
+  const auto writer = porosph::coupling::open_snapshot_writer(client.setup(), "fluid.h5");
+  return porosph::coupling::run_solver_loop(client, solver, *writer);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "io/snapshot_writer.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <set>
 #include <stdexcept>
 
@@ -114,6 +115,32 @@ SnapshotWriter::SnapshotWriter(const std::string& path) : impl_(std::make_unique
   Hdf5Id group(H5Gcreate2(impl_->file.get(), "/snapshots", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                H5Gclose, where);
   check_hdf5(H5Fflush(impl_->file.get(), H5F_SCOPE_LOCAL), where);
+}
+
+SnapshotWriter::SnapshotWriter(const std::string& path, std::uint32_t first_dropped)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->path = path;
+  Hdf5ErrorSilencer silence;
+  const std::string where = "SnapshotWriter: cannot reopen HDF5 file '" + path + "'";
+  if (!std::filesystem::exists(path)) {
+    impl_->file =
+        Hdf5Id(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose, where);
+  } else {
+    impl_->file = Hdf5Id(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose, where);
+  }
+  const hid_t file = impl_->file.get();
+  if (H5Lexists(file, "/snapshots", H5P_DEFAULT) <= 0) {
+    Hdf5Id group(H5Gcreate2(file, "/snapshots", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                 where);
+  }
+  // Groups are named by their zero-padded index: probe upwards from first_dropped until a gap of
+  // indices no writer leaves (outputs are consecutive).
+  for (std::uint32_t index = first_dropped;; ++index) {
+    const std::string name = snapshot_group(index);
+    if (H5Lexists(file, name.c_str(), H5P_DEFAULT) <= 0) break;
+    check_hdf5(H5Ldelete(file, name.c_str(), H5P_DEFAULT), where + ": cannot delete " + name);
+  }
+  check_hdf5(H5Fflush(file, H5F_SCOPE_LOCAL), where);
 }
 
 SnapshotWriter::~SnapshotWriter() = default;  // Hdf5Id closes the file (errors silenced).

@@ -41,6 +41,10 @@ class SnapshotWriter {
  public:
   /// Creates (truncates) the file. Throws std::runtime_error naming the path on failure.
   explicit SnapshotWriter(const std::string& path);
+  /// Resume (docs/checkpoints.md): opens the existing file and deletes the snapshot groups with
+  /// index >= first_dropped (written after the checkpoint the run resumes from); a missing file is
+  /// created. Throws std::runtime_error naming the path on failure.
+  SnapshotWriter(const std::string& path, std::uint32_t first_dropped);
   ~SnapshotWriter();
   SnapshotWriter(const SnapshotWriter&) = delete;
   SnapshotWriter& operator=(const SnapshotWriter&) = delete;

@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <fstream>
 #include <stdexcept>
 #include <utility>
 
@@ -31,13 +32,51 @@ TimeSeriesCsv::TimeSeriesCsv(const std::string& path, std::vector<std::string> c
     throw std::runtime_error("TimeSeriesCsv: cannot create '" + path_ +
                              "': " + std::strerror(errno));
   }
+  write_or_throw(header_line() + '\n');
+}
+
+TimeSeriesCsv::TimeSeriesCsv(const std::string& path, std::vector<std::string> columns,
+                             std::size_t keep_rows)
+    : path_(path), columns_(std::move(columns)) {
+  const std::string where = "TimeSeriesCsv: cannot resume '" + path_ + "'";
+  if (columns_.empty()) throw std::runtime_error(where + ": no columns");
+  std::ifstream in(path_);
+  if (!in) throw std::runtime_error(where + ": " + std::strerror(errno));
+  std::string line, kept;
+  if (!std::getline(in, line) || line != header_line()) {
+    throw std::runtime_error(where + ": its header differs from this run's columns");
+  }
+  kept = line + '\n';
+  std::size_t rows = 0;
+  while (rows < keep_rows && std::getline(in, line)) {
+    kept += line + '\n';
+    ++rows;
+  }
+  if (rows < keep_rows) {
+    throw std::runtime_error(where + ": " + std::to_string(rows) + " rows, the checkpoint needs " +
+                             std::to_string(keep_rows));
+  }
+  in.close();
+  const std::string tmp = path_ + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::trunc);
+    out << kept;
+    if (!out.flush()) throw std::runtime_error(where + ": cannot write " + tmp);
+  }
+  if (std::rename(tmp.c_str(), path_.c_str()) != 0) {
+    throw std::runtime_error(where + ": cannot rename " + tmp + ": " + std::strerror(errno));
+  }
+  file_.reset(std::fopen(path_.c_str(), "a"));
+  if (!file_) throw std::runtime_error(where + ": " + std::strerror(errno));
+}
+
+std::string TimeSeriesCsv::header_line() const {
   std::string header;
   for (std::size_t i = 0; i < columns_.size(); ++i) {
     if (i > 0) header += ',';
     header += csv_quoted(columns_[i]);
   }
-  header += '\n';
-  write_or_throw(header);
+  return header;
 }
 
 void TimeSeriesCsv::append(const std::vector<double>& row) {

@@ -16,6 +16,11 @@ class TimeSeriesCsv {
   /// quote or line break are quoted. Throws std::runtime_error naming the path on failure or if
   /// `columns` is empty.
   TimeSeriesCsv(const std::string& path, std::vector<std::string> columns);
+  /// Resume (docs/checkpoints.md): keeps the header and the first `keep_rows` rows of the existing
+  /// file (the rows written before the checkpoint; later rows are removed, via a temporary file
+  /// and rename), then appends from there. Throws std::runtime_error naming the path if the file
+  /// is missing, its header differs from `columns` or it has fewer than `keep_rows` rows.
+  TimeSeriesCsv(const std::string& path, std::vector<std::string> columns, std::size_t keep_rows);
 
   /// Appends one row, formatted with %.10g (10 significant digits), and flushes it. Throws
   /// std::runtime_error naming the path if the row length differs from the number of columns or
@@ -30,6 +35,7 @@ class TimeSeriesCsv {
     void operator()(std::FILE* file) const { std::fclose(file); }
   };
   void write_or_throw(const std::string& text);
+  std::string header_line() const;
 
   std::string path_;
   std::vector<std::string> columns_;

@@ -35,6 +35,10 @@ struct SetupData {
   double dp = 0, h = 0, dt0 = 0, end_time = 0;
   std::vector<double> gravity;
   double timeout_seconds = 60;
+  /// Resume: the checkpoint file to restore before the first step (empty: start from the scene).
+  std::string restore_checkpoint;
+  /// Resume: snapshots with this index or higher are dropped from the phase's HDF5 file.
+  std::uint32_t resume_output_index = 0;
 };
 
 struct Diagnostics {
@@ -59,6 +63,8 @@ struct StepState {
   std::vector<std::int32_t> overlap_material;  ///< soil only
   std::vector<double> region_min, region_max;
   Diagnostics diagnostics;
+  /// Index of the checkpoint written after the last advance (asked by the last command); 0: none.
+  std::uint32_t checkpoint_written = 0;
 };
 
 /// The coupler's answer: the one shared dt and what else to do this step.
@@ -72,6 +78,9 @@ struct StepCommand {
   std::vector<double> interaction_acceleration;  ///< per overlap particle, n*D (may be empty)
   std::vector<double> saturation;                ///< soil only
   std::vector<double> other_region_min, other_region_max;
+  /// After advancing, write checkpoint `checkpoint_index` (>= 1) and confirm it in the next state.
+  bool write_checkpoint = false;
+  std::uint32_t checkpoint_index = 0;
 };
 
 struct Timing {

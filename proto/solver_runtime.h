@@ -7,18 +7,28 @@
 // initial state are computed before the first report.
 // A solver type plugs in by providing: compute_rates(), fill_state(StepState&, min, max),
 // find_non_finite(std::int64_t*), add_interaction(const std::vector<double>&), advance(double),
-// snapshot_fields(), time(), step(); a soil solver also set_saturation(const std::vector<double>&).
+// snapshot_fields(), time(), step(), write_checkpoint(io::CheckpointWriter&),
+// restore_checkpoint(const io::CheckpointReader&); a soil solver also
+// set_saturation(const std::vector<double>&).
+// Checkpoints (docs/checkpoints.md): a command with write_checkpoint makes the loop advance, then
+// write OUT/checkpoint/<phase>_NNNN.h5 (the solver's state plus the overlap zone of that command)
+// and confirm it in the next state; Setup.restore_checkpoint makes it restore one before the first
+// step.
 #pragma once
 
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
+#include <memory>
 #include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "io/checkpoint_file.h"
 #include "io/snapshot_writer.h"
+#include "proto/checkpoint_names.h"
 #include "proto/coupling_client.h"
 
 namespace porosph::coupling {
@@ -31,6 +41,41 @@ struct has_set_saturation<Solver, std::void_t<decltype(std::declval<Solver&>().s
                                       std::declval<const std::vector<double>&>()))>>
     : std::true_type {};
 
+/// The phase's snapshot file OUT/<file_name>: created afresh, or on resume reopened without the
+/// snapshots written after the checkpoint (index >= Setup.resume_output_index).
+inline std::unique_ptr<io::SnapshotWriter> open_snapshot_writer(const SetupData& setup,
+                                                                const std::string& file_name) {
+  const std::string path = setup.output_dir + "/" + file_name;
+  if (setup.restore_checkpoint.empty()) return std::make_unique<io::SnapshotWriter>(path);
+  return std::make_unique<io::SnapshotWriter>(path, setup.resume_output_index);
+}
+
+/// Writes checkpoint `index` of `solver` (atomically: temp file + rename) with the overlap zone
+/// the solver must report next.
+template <class Solver>
+void write_solver_checkpoint(const SetupData& setup, std::uint32_t index, Solver& solver,
+                             const std::vector<double>& overlap_min,
+                             const std::vector<double>& overlap_max) {
+  std::filesystem::create_directories(checkpoint_dir(setup.output_dir));
+  io::CheckpointWriter out(solver_checkpoint_path(setup.output_dir, setup.phase, index));
+  solver.write_checkpoint(out);
+  out.write("overlap_min", overlap_min.data(), overlap_min.size());
+  out.write("overlap_max", overlap_max.data(), overlap_max.size());
+  out.commit();
+}
+
+/// Restores Setup.restore_checkpoint into `solver` and the overlap zone it must report first.
+template <class Solver>
+void restore_solver_checkpoint(const SetupData& setup, Solver& solver,
+                               std::vector<double>& overlap_min, std::vector<double>& overlap_max) {
+  const io::CheckpointReader in(setup.restore_checkpoint);
+  solver.restore_checkpoint(in);
+  overlap_min.resize(in.rows("overlap_min"));
+  overlap_max.resize(in.rows("overlap_max"));
+  in.read("overlap_min", overlap_min.data());
+  in.read("overlap_max", overlap_max.data());
+}
+
 /// Runs the coupled step loop until the coupler says stop. Returns the process exit code (0 when
 /// the coupler stopped the run normally, 1 when this solver failed - it has then told the coupler
 /// why).
@@ -41,6 +86,7 @@ int run_solver_loop(CouplingClient& client, Solver& solver, io::SnapshotWriter& 
   double physics_seconds = 0.0;
   StepState state;
   std::vector<double> overlap_min, overlap_max;
+  const SetupData& setup = client.setup();
   // A non-finite check; false (after telling the coupler, naming the particle) when the state
   // went bad. Run on each new state before it is sent, and again on its rates.
   const auto state_is_finite = [&]() {
@@ -65,8 +111,17 @@ int run_solver_loop(CouplingClient& client, Solver& solver, io::SnapshotWriter& 
     physics_seconds += seconds;
     return ok;
   };
-  if (!timed(rates_are_finite)) return 1;
-  bool rates_pending = false;  // the rates of the current state are still to be computed
+  // The rates of the current state are still to be computed. A checkpoint is taken after
+  // advance(), before those rates: a restored solver continues from exactly there (its dt limits
+  // of the previous rates are part of the checkpoint).
+  bool rates_pending = false;
+  if (!setup.restore_checkpoint.empty()) {
+    restore_solver_checkpoint(setup, solver, overlap_min, overlap_max);
+    rates_pending = true;
+  } else if (!timed(rates_are_finite)) {
+    return 1;
+  }
+  std::uint32_t checkpoint_written = 0;  // confirmed with the next state
   for (;;) {
     if (rates_pending && !timed(state_is_finite)) return 1;
     timed([&] {
@@ -75,6 +130,8 @@ int run_solver_loop(CouplingClient& client, Solver& solver, io::SnapshotWriter& 
     });
     state.diagnostics.physics_seconds = physics_since_report;
     physics_since_report = 0.0;
+    state.checkpoint_written = checkpoint_written;
+    checkpoint_written = 0;
     client.send_state(state);
     // Overlaps with the coupler's interaction and the other solver's work.
     if (rates_pending && !timed(rates_are_finite)) return 1;
@@ -95,6 +152,10 @@ int run_solver_loop(CouplingClient& client, Solver& solver, io::SnapshotWriter& 
       }
       if constexpr (has_set_saturation<Solver>::value) solver.set_saturation(command.saturation);
       solver.advance(command.dt);
+      if (command.write_checkpoint) {
+        write_solver_checkpoint(setup, command.checkpoint_index, solver, overlap_min, overlap_max);
+        checkpoint_written = command.checkpoint_index;
+      }
       return true;
     });
     rates_pending = true;

@@ -163,6 +163,7 @@ void to_wire(const coupling::StepState& in, StepState& out) {
   assign(out.mutable_region_min(), in.region_min);
   assign(out.mutable_region_max(), in.region_max);
   to_wire(in.diagnostics, *out.mutable_diagnostics());
+  out.set_checkpoint_written(in.checkpoint_written);
 }
 
 void from_wire(const StepState& in, coupling::StepState& out) {
@@ -182,6 +183,7 @@ void from_wire(const StepState& in, coupling::StepState& out) {
   assign(out.region_min, in.region_min());
   assign(out.region_max, in.region_max());
   from_wire(in.diagnostics(), out.diagnostics);
+  out.checkpoint_written = in.checkpoint_written();
 }
 
 void to_wire(const coupling::StepCommand& in, StepCommand& out) {
@@ -195,6 +197,8 @@ void to_wire(const coupling::StepCommand& in, StepCommand& out) {
   assign(out.mutable_saturation(), in.saturation);
   assign(out.mutable_other_region_min(), in.other_region_min);
   assign(out.mutable_other_region_max(), in.other_region_max);
+  out.set_write_checkpoint(in.write_checkpoint);
+  out.set_checkpoint_index(in.checkpoint_index);
 }
 
 void from_wire(const StepCommand& in, coupling::StepCommand& out) {
@@ -208,6 +212,8 @@ void from_wire(const StepCommand& in, coupling::StepCommand& out) {
   assign(out.saturation, in.saturation());
   assign(out.other_region_min, in.other_region_min());
   assign(out.other_region_max, in.other_region_max());
+  out.write_checkpoint = in.write_checkpoint();
+  out.checkpoint_index = in.checkpoint_index();
 }
 
 void to_wire(const coupling::SetupData& in, Setup& out) {
@@ -222,6 +228,8 @@ void to_wire(const coupling::SetupData& in, Setup& out) {
   out.set_end_time(in.end_time);
   assign(out.mutable_gravity(), in.gravity);
   out.set_timeout_seconds(in.timeout_seconds);
+  out.set_restore_checkpoint(in.restore_checkpoint);
+  out.set_resume_output_index(in.resume_output_index);
 }
 
 void from_wire(const Setup& in, coupling::SetupData& out) {
@@ -236,6 +244,8 @@ void from_wire(const Setup& in, coupling::SetupData& out) {
   out.end_time = in.end_time();
   assign(out.gravity, in.gravity());
   out.timeout_seconds = in.timeout_seconds();
+  out.restore_checkpoint = in.restore_checkpoint();
+  out.resume_output_index = in.resume_output_index();
 }
 
 void to_wire(const coupling::Timing& in, Goodbye& out) {

@@ -45,13 +45,15 @@ struct RunSettings {
   double dt0 = 1e-4;             ///< initial (and largest) time step [s], eq. 21 / Fig. 1
   double cfl = 0.2;              ///< C_cfl in dt_cfl = C_cfl h / (c + |v|max)
   double c_a = 0.25;             ///< C_a of eq. 21 (0.005 is the coupled default)
-  double viscous_coefficient = 0.125;   ///< dt_visc = coeff h^2 / nu
-  bool dt_smoothing = true;             ///< Fig. 1 smoothing on/off (off: dt = min(limits, dt0))
-  int euler_every = 40;                 ///< modified Verlet: an Euler step every N steps
-  double solver_timeout = 60.0;         ///< [s] a solver silent this long fails the run
-  std::vector<double> gravity;          ///< [m/s^2], length = dimension
-  std::vector<bool> periodic;           ///< per axis, length = dimension
-  std::string kernel = "cubic_spline";  ///< "cubic_spline" | "wendland_c2"
+  double viscous_coefficient = 0.125;    ///< dt_visc = coeff h^2 / nu
+  bool dt_smoothing = true;              ///< Fig. 1 smoothing on/off (off: dt = min(limits, dt0))
+  int euler_every = 40;                  ///< modified Verlet: an Euler step every N steps
+  double solver_timeout = 60.0;          ///< [s] a solver silent this long fails the run
+  double checkpoint_interval = 0.0;      ///< [s] simulated time between checkpoints; 0: none
+  double checkpoint_wall_minutes = 0.0;  ///< [min] wall time between checkpoints; 0: none
+  std::vector<double> gravity;           ///< [m/s^2], length = dimension
+  std::vector<bool> periodic;            ///< per axis, length = dimension
+  std::string kernel = "cubic_spline";   ///< "cubic_spline" | "wendland_c2"
 };
 
 /// The simulation box: periodic axes wrap at its faces; particles leaving it are removed and

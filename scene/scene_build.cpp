@@ -71,6 +71,8 @@ Scene build_scene(const toml::table& root) {
   r.dt_smoothing = *run["dt_smoothing"].value<bool>();
   r.euler_every = static_cast<int>(*run["euler_every"].value<int64_t>());
   r.solver_timeout = *run["solver_timeout"].value<double>();
+  r.checkpoint_interval = *run["checkpoint_interval"].value<double>();
+  r.checkpoint_wall_minutes = *run["checkpoint_wall_minutes"].value<double>();
   r.gravity = vector_of(run.get("gravity"));
   for (const auto& axis : *run["periodic"].as_array()) r.periodic.push_back(*axis.value<bool>());
   r.kernel = text_of(run, "kernel");

@@ -85,6 +85,17 @@ void add_scene_and_run(SceneSchema& s) {
                        .fallback("60.0")
                        .above(0)
                        .doc("A solver process silent for this long (wall time) fails the run."));
+  s.keys.push_back(Key("run.checkpoint_interval", T::Float)
+                       .unit("s")
+                       .fallback("0.0")
+                       .at_least(0)
+                       .doc("Simulated time between two checkpoints in OUT/checkpoint (resume with "
+                            "`coupler run --resume OUT`, docs/checkpoints.md); 0: none."));
+  s.keys.push_back(Key("run.checkpoint_wall_minutes", T::Float)
+                       .unit("min")
+                       .fallback("0.0")
+                       .at_least(0)
+                       .doc("Wall time between two checkpoints (docs/checkpoints.md); 0: none."));
   s.keys.push_back(Key("run.gravity", T::Vector)
                        .unit("m/s^2")
                        .fallback_per_dimension("[0.0, -9.81]", "[0.0, 0.0, -9.81]")

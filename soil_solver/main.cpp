@@ -21,8 +21,8 @@ constexpr const char* kSolverVersion = "0.1.0";
 template <int D>
 int run_dimension(porosph::coupling::CouplingClient& client, const porosph::scene::Scene& scene) {
   porosph::soil::SoilSolver<D> solver(scene);
-  porosph::io::SnapshotWriter writer(client.setup().output_dir + "/soil.h5");
-  return porosph::coupling::run_solver_loop(client, solver, writer);
+  const auto writer = porosph::coupling::open_snapshot_writer(client.setup(), "soil.h5");
+  return porosph::coupling::run_solver_loop(client, solver, *writer);
 }
 
 }  // namespace

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "io/checkpoint_file.h"
 #include "io/snapshot_writer.h"
 #include "proto/coupling_client.h"
 #include "scene/scene.h"
@@ -68,6 +69,15 @@ class SoilSolver {
   /// plastic_strain, displacement, saturation, id, material, fixed; valid until the next
   /// compute_rates/advance.
   std::vector<io::FieldView> snapshot_fields() const;
+
+  /// Stores the whole state the integrator carries from step to step (every particle array incl.
+  /// stress, porosity, plastic strain, displacement, saturation and wet flags; the counters, time,
+  /// step, damping release, pending wall removal; soil_checkpoint.cpp). Call between advance() and
+  /// the next compute_rates().
+  void write_checkpoint(io::CheckpointWriter& out);
+  /// Replaces the state with a checkpoint's (the solver must be built from the same scene); the
+  /// run then continues exactly as the one that wrote it. Throws std::runtime_error on a mismatch.
+  void restore_checkpoint(const io::CheckpointReader& in);
 
   double time() const { return time_; }
   std::uint64_t step() const { return step_; }

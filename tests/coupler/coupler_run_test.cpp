@@ -161,7 +161,8 @@ TEST(CouplerRunFaults, KilledCouplerTakesItsSolversWithIt) {
 }
 
 // SIGTERM while the solver answers every step (no receive ever times out): the coupler must still
-// notice, stop its solver and exit 1 with the reason.
+// notice, stop its solver and exit 1 with the reason. The dummy writes no checkpoint when asked for
+// the one a signal triggers (docs/checkpoints.md), so the message says there is none.
 TEST(CouplerRunFaults, TerminatedCouplerStopsABusyRun) {
   const std::string dir = fresh_dir("terminated-coupler");
   const std::string scene = write_text(dir + "/scene.toml", kScene);
@@ -181,6 +182,27 @@ TEST(CouplerRunFaults, TerminatedCouplerStopsABusyRun) {
   EXPECT_NE(record.at("message").get<std::string>().find("interrupted by signal 15"),
             std::string::npos)
       << record.at("message");
+  EXPECT_NE(record.at("message").get<std::string>().find("no checkpoint"), std::string::npos)
+      << record.at("message");
+}
+
+// A signal while a solver hangs: the coupler waits for the checkpoint the signal asks for, but a
+// second signal stops the run at once (docs/checkpoints.md).
+TEST(CouplerRunFaults, SecondSignalStopsAHungRunAtOnce) {
+  const std::string dir = fresh_dir("second-signal");
+  const std::string scene = write_text(dir + "/scene.toml", kScene);
+  const pid_t coupler = start_hanging_run(dir, scene);
+  const pid_t solver = wait_for_solver_pid(dir);
+  ASSERT_GT(solver, 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // the dummy hangs at step 2
+  kill(coupler, SIGTERM);
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  EXPECT_TRUE(process_exists(coupler)) << "the first signal waits for the checkpoint";
+  kill(coupler, SIGINT);
+  EXPECT_EQ(wait_process(coupler, 5.0), 1) << read_text(dir + "/log.txt");
+  EXPECT_TRUE(wait_gone(solver, 5.0));
+  const std::string message = read_json(dir + "/out/run.json").at("message");
+  EXPECT_NE(message.find("interrupted by signal 2 a second time"), std::string::npos) << message;
 }
 
 TEST(CouplerRunInput, BadSceneExitsTwoNamingFileLineAndKey) {

@@ -35,6 +35,7 @@ coupling::StepState sample_state() {
   s.diagnostics.momentum = {0.25, -0.5};
   s.diagnostics.observables = {{"front", 0.3}, {"head", 1.25}};
   s.diagnostics.physics_seconds = 0.01;
+  s.checkpoint_written = 3;
   return s;
 }
 
@@ -76,6 +77,7 @@ TEST(WireConvert, StepStateSurvivesSerialisation) {
   EXPECT_EQ(out.diagnostics.momentum, in.diagnostics.momentum);
   EXPECT_EQ(out.diagnostics.observables, in.diagnostics.observables);
   EXPECT_EQ(out.diagnostics.physics_seconds, 0.01);
+  EXPECT_EQ(out.checkpoint_written, in.checkpoint_written);
 }
 
 TEST(WireConvert, StepCommandSetupAndTimingSurviveSerialisation) {
@@ -90,6 +92,8 @@ TEST(WireConvert, StepCommandSetupAndTimingSurviveSerialisation) {
   command.saturation = {0.5, 1.0};
   command.other_region_min = {0, 0};
   command.other_region_max = {1, 2};
+  command.write_checkpoint = true;
+  command.checkpoint_index = 4;
   StepCommand message, parsed;
   to_wire(command, message);
   ASSERT_TRUE(parsed.ParseFromString(message.SerializeAsString()));
@@ -105,6 +109,8 @@ TEST(WireConvert, StepCommandSetupAndTimingSurviveSerialisation) {
   EXPECT_EQ(back.saturation, command.saturation);
   EXPECT_EQ(back.other_region_min, command.other_region_min);
   EXPECT_EQ(back.other_region_max, command.other_region_max);
+  EXPECT_TRUE(back.write_checkpoint);
+  EXPECT_EQ(back.checkpoint_index, 4u);
 
   coupling::SetupData setup;
   setup.phase = "soil";
@@ -118,6 +124,8 @@ TEST(WireConvert, StepCommandSetupAndTimingSurviveSerialisation) {
   setup.end_time = 2;
   setup.gravity = {0, 0, -9.81};
   setup.timeout_seconds = 12;
+  setup.restore_checkpoint = "/tmp/out/checkpoint/soil_0002.h5";
+  setup.resume_output_index = 5;
   wire::Setup setup_message;
   to_wire(setup, setup_message);
   coupling::SetupData setup_back;
@@ -133,6 +141,8 @@ TEST(WireConvert, StepCommandSetupAndTimingSurviveSerialisation) {
   EXPECT_EQ(setup_back.end_time, 2);
   EXPECT_EQ(setup_back.gravity, setup.gravity);
   EXPECT_EQ(setup_back.timeout_seconds, 12);
+  EXPECT_EQ(setup_back.restore_checkpoint, setup.restore_checkpoint);
+  EXPECT_EQ(setup_back.resume_output_index, 5u);
 
   coupling::Timing timing{1.5, 1.0, 0.25};
   Goodbye goodbye;

@@ -1,0 +1,293 @@
+// Checkpoints and `coupler run --resume` with the real coupler and solvers (docs/checkpoints.md):
+// a run killed (SIGKILL) right after a checkpoint, or stopped by SIGTERM, and then resumed ends
+// with the same snapshots, time series and ledgers as the same run left alone. OMP_NUM_THREADS=1
+// keeps every reduction in one order, so the comparison is to round-off (in practice bit for bit).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+#include "io/snapshot_reader.h"
+#include "tests/support/process_support.h"
+
+namespace porosph::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr double kRelativeTolerance = 1e-12;
+
+/// The water scene: ~1600 steps, checkpoints at t = 0.01, 0.02, 0.03 s.
+std::vector<std::string> dam_break_run(const std::string& out) {
+  return {bin("coupler"),
+          "run",
+          source("cases/dam_break/scene.toml"),
+          "--out",
+          out,
+          "--no-progress",
+          "--set",
+          "run.dp=0.002",
+          "--set",
+          "run.end_time=0.04",
+          "--set",
+          "run.checkpoint_interval=0.01"};
+}
+
+/// The coupled scene: water driven up through a free sand layer on fixed filters (the quick
+/// fluidised-bed recipe of docs/coupling.md, shortened: a 5 ms damping stage, then a strong
+/// inflow), so particles are born in the inflow zone and removed in the outflow zone across the
+/// checkpoint.
+std::vector<std::string> fluidized_bed_run(const std::string& out) {
+  std::vector<std::string> argv = {bin("coupler"), "run", source("cases/fluidized_bed/scene.toml"),
+                                   "--out",        out,   "--no-progress"};
+  for (const char* set :
+       {"run.dp=0.002", "run.end_time=0.03", "run.output_interval=0.005",
+        "run.checkpoint_interval=0.01", "soil.damping_duration=0.005",
+        "water.inflow.0.start_time=0.005", "water.inflow.0.ramp_time=0.002",
+        "water.inflow.0.flow_rate=5e-3", "soil.materials.0.young_modulus=0.2e6",
+        "soil.materials.1.young_modulus=0.2e6", "soil.materials.2.young_modulus=0.2e6"}) {
+    argv.insert(argv.end(), {"--set", set});
+  }
+  return argv;
+}
+
+/// One thread per solver: every sum in one order, so runs agree to the last bit.
+void single_threaded() { setenv("OMP_NUM_THREADS", "1", 1); }
+
+/// Runs argv to completion in `dir` (log in dir/log.txt); expects exit 0.
+void run_to_completion(const std::vector<std::string>& argv, const std::string& dir) {
+  const CommandResult result = run_process(argv, dir + "/log.txt", 120);
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+}
+
+/// Waits (up to 60 s) for `path` to exist; polls every 2 ms.
+bool wait_for_file(const std::string& path) {
+  for (int i = 0; i < 30000; ++i) {
+    if (fs::exists(path)) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  return false;
+}
+
+/// The pids of the solver processes named in run.json.
+std::vector<pid_t> solver_pids(const std::string& out) {
+  std::vector<pid_t> pids;
+  for (const auto& [phase, record] : read_json(out + "/run.json").at("phases").items()) {
+    pids.push_back(record.at("pid").get<pid_t>());
+  }
+  return pids;
+}
+
+/// The rows of a CSV file as numbers (header dropped).
+std::vector<std::vector<double>> csv_rows(const std::string& path) {
+  std::vector<std::vector<double>> rows;
+  std::istringstream text(read_text(path));
+  std::string line;
+  std::getline(text, line);
+  while (std::getline(text, line)) {
+    std::vector<double> row;
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+void expect_close(double a, double b, const std::string& what) {
+  const double scale = std::max({std::abs(a), std::abs(b), 1e-300});
+  if (std::isnan(a) && std::isnan(b)) return;
+  EXPECT_LE(std::abs(a - b), kRelativeTolerance * scale) << what << ": " << a << " vs " << b;
+}
+
+/// Same t column (no duplicate or missing row) and the same values in every row.
+void expect_same_timeseries(const std::string& a, const std::string& b) {
+  const auto rows_a = csv_rows(a + "/timeseries.csv");
+  const auto rows_b = csv_rows(b + "/timeseries.csv");
+  ASSERT_EQ(rows_a.size(), rows_b.size()) << read_text(b + "/timeseries.csv");
+  for (std::size_t r = 0; r < rows_a.size(); ++r) {
+    ASSERT_EQ(rows_a[r].size(), rows_b[r].size());
+    EXPECT_EQ(rows_a[r][0], rows_b[r][0]) << "t of row " << r;
+    if (r > 0) {
+      EXPECT_GT(rows_b[r][0], rows_b[r - 1][0]) << "t must increase (row " << r << ")";
+    }
+    for (std::size_t c = 1; c < rows_a[r].size(); ++c) {
+      expect_close(rows_a[r][c], rows_b[r][c],
+                   "row " + std::to_string(r) + " column " + std::to_string(c));
+    }
+  }
+}
+
+/// Same snapshot list, and the last snapshots agree field by field.
+void expect_same_snapshots(const std::string& a, const std::string& b, const std::string& file,
+                           const std::vector<std::string>& f64_fields) {
+  const io::SnapshotReader ra(a + "/" + file), rb(b + "/" + file);
+  const auto sa = ra.snapshots(), sb = rb.snapshots();
+  ASSERT_EQ(sa.size(), sb.size()) << file;
+  for (std::size_t i = 0; i < sa.size(); ++i) {
+    EXPECT_EQ(sa[i].index, sb[i].index) << file;
+    EXPECT_EQ(sa[i].time, sb[i].time) << file << " snapshot " << i;
+  }
+  const std::uint32_t last = sa.back().index;
+  EXPECT_EQ(ra.read_i64(last, "id").values, rb.read_i64(last, "id").values) << file;
+  for (const std::string& field : f64_fields) {
+    const auto fa = ra.read_f64(last, field), fb = rb.read_f64(last, field);
+    ASSERT_EQ(fa.values.size(), fb.values.size()) << file << " " << field;
+    for (std::size_t k = 0; k < fa.values.size(); ++k) {
+      expect_close(fa.values[k], fb.values[k], file + " " + field + "[" + std::to_string(k) + "]");
+    }
+  }
+}
+
+/// The uninterrupted reference run of a scene, made once per test process.
+const std::string& reference_run(const std::string& name,
+                                 std::vector<std::string> (*scene)(const std::string&)) {
+  static std::map<std::string, std::string> done;
+  auto it = done.find(name);
+  if (it != done.end()) return it->second;
+  single_threaded();
+  const std::string dir = fresh_dir("reference-" + name);
+  run_to_completion(scene(dir + "/out"), dir);
+  return done[name] = dir + "/out";
+}
+
+/// Rows in timeseries.csv before the latest checkpoint (its output index).
+std::size_t rows_before_checkpoint(const std::string& out) {
+  const auto manifest = read_json(out + "/checkpoint/latest.json");
+  const auto state = read_json(out + "/checkpoint/" + manifest.at("coupler").get<std::string>());
+  return state.at("loop").at("output_index").get<std::size_t>();
+}
+
+/// Starts the run, SIGKILLs the coupler once the first checkpoint is complete and a row past it is
+/// in timeseries.csv (so the resume must drop output), waits for its solvers to go, and resumes.
+/// Returns the resumed run's directory.
+std::string kill_after_checkpoint_and_resume(
+    const std::string& name, std::vector<std::string> (*scene)(const std::string&)) {
+  single_threaded();
+  const std::string dir = fresh_dir("killed-" + name);
+  const std::string out = dir + "/out";
+  const pid_t coupler = start_process(scene(out), dir + "/log.txt");
+  EXPECT_TRUE(wait_for_file(out + "/checkpoint/latest.json")) << read_text(dir + "/log.txt");
+  const std::size_t kept = rows_before_checkpoint(out);
+  for (int i = 0; i < 30000 && csv_rows(out + "/timeseries.csv").size() <= kept; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  kill(coupler, SIGKILL);
+  EXPECT_GT(csv_rows(out + "/timeseries.csv").size(), kept) << "no output past the checkpoint";
+  EXPECT_EQ(wait_process(coupler, 10.0), -1) << "the run ended before the kill";
+  for (pid_t solver : solver_pids(out)) EXPECT_TRUE(wait_gone(solver, 10.0));
+  EXPECT_NE(read_json(out + "/run.json").at("status"), "completed");
+  const CommandResult resumed =
+      run_process({bin("coupler"), "run", "--resume", out, "--no-progress"}, dir + "/resume.txt");
+  EXPECT_EQ(resumed.exit_code, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find("resuming"), std::string::npos) << resumed.output;
+  return out;
+}
+
+TEST(CheckpointResume, KilledWaterRunResumesToTheSameResult) {
+  const std::string& reference = reference_run("dam_break", dam_break_run);
+  const std::string out = kill_after_checkpoint_and_resume("dam_break", dam_break_run);
+  const auto record = read_json(out + "/run.json");
+  EXPECT_EQ(record.at("status"), "completed");
+  EXPECT_EQ(record.at("resumes"), 1);
+  const auto expected = read_json(reference + "/run.json");
+  EXPECT_EQ(record.at("steps"), expected.at("steps"));
+  EXPECT_EQ(record.at("simulated_time"), expected.at("simulated_time"));
+  expect_same_timeseries(reference, out);
+  expect_same_snapshots(reference, out, "fluid.h5",
+                        {"position", "velocity", "density", "pressure"});
+  EXPECT_NE(read_text(out + "/run.xdmf").find("000010"), std::string::npos);
+}
+
+TEST(CheckpointResume, KilledCoupledRunResumesSoilStateAndLedger) {
+  const std::string& reference = reference_run("fluidized_bed", fluidized_bed_run);
+  const std::string out = kill_after_checkpoint_and_resume("fluidized_bed", fluidized_bed_run);
+  const auto record = read_json(out + "/run.json");
+  EXPECT_EQ(record.at("status"), "completed");
+  const auto expected = read_json(reference + "/run.json");
+  EXPECT_EQ(record.at("steps"), expected.at("steps"));
+  for (const char* key : {"impulse_to_water", "impulse_to_soil"}) {
+    for (int k = 0; k < 2; ++k) {
+      expect_close(record.at("ledger").at(key).at(k).get<double>(),
+                   expected.at("ledger").at(key).at(k).get<double>(), key);
+    }
+  }
+  expect_close(record.at("ledger").at("impulse_magnitude_sum").get<double>(),
+               expected.at("ledger").at("impulse_magnitude_sum").get<double>(), "magnitude sum");
+  for (const char* phase : {"water", "soil"}) {
+    const auto& mass = record.at("phases").at(phase).at("mass");
+    for (const char* key : {"initial", "final", "inflow", "outflow"}) {
+      expect_close(mass.at(key).get<double>(),
+                   expected.at("phases").at(phase).at("mass").at(key).get<double>(),
+                   std::string(phase) + " mass " + key);
+    }
+    EXPECT_EQ(record.at("phases").at(phase).at("particles"),
+              expected.at("phases").at(phase).at("particles"));
+  }
+  EXPECT_GT(record.at("phases").at("water").at("mass").at("inflow").get<double>(), 0.0);
+  EXPECT_GT(record.at("phases").at("water").at("particles").at("removed").get<int>(), 0);
+  EXPECT_EQ(record.at("interaction").at("evaluations"),
+            expected.at("interaction").at("evaluations"));
+  expect_same_timeseries(reference, out);
+  expect_same_snapshots(reference, out, "fluid.h5", {"position", "velocity", "density"});
+  expect_same_snapshots(reference, out, "soil.h5",
+                        {"position", "velocity", "density", "stress", "porosity", "plastic_strain",
+                         "displacement", "saturation"});
+}
+
+TEST(CheckpointResume, SigtermWritesACheckpointAndTheResumeCompletes) {
+  const std::string& reference = reference_run("dam_break", dam_break_run);
+  single_threaded();
+  const std::string dir = fresh_dir("sigterm");
+  const std::string out = dir + "/out";
+  const pid_t coupler = start_process(dam_break_run(out), dir + "/log.txt");
+  // Past the first outputs (t >= 0.004 s), before the scheduled checkpoint at 0.02 s.
+  for (int i = 0; i < 30000 && csv_rows(out + "/timeseries.csv").size() < 2; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  kill(coupler, SIGTERM);
+  EXPECT_EQ(wait_process(coupler, 20.0), 1) << read_text(dir + "/log.txt");
+  for (pid_t solver : solver_pids(out)) EXPECT_TRUE(wait_gone(solver, 5.0));
+  const auto failed = read_json(out + "/run.json");
+  EXPECT_EQ(failed.at("status"), "failed");
+  const std::string message = failed.at("message");
+  EXPECT_NE(message.find("interrupted by signal 15; checkpoint at t = "), std::string::npos)
+      << message;
+  EXPECT_NE(message.find("coupler run --resume " + out), std::string::npos) << message;
+  EXPECT_NE(read_text(dir + "/log.txt").find(message), std::string::npos);
+  ASSERT_TRUE(fs::exists(out + "/checkpoint/latest.json"));
+  EXPECT_EQ(read_json(out + "/checkpoint/latest.json").at("step"), failed.at("steps"));
+
+  const CommandResult resumed =
+      run_process({bin("coupler"), "run", "--resume", out, "--no-progress"}, dir + "/resume.txt");
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  EXPECT_EQ(read_json(out + "/run.json").at("status"), "completed");
+  expect_same_timeseries(reference, out);
+  expect_same_snapshots(reference, out, "fluid.h5",
+                        {"position", "velocity", "density", "pressure"});
+}
+
+TEST(CheckpointResume, DirectoryWithoutCheckpointIsRefusedWithExitTwo) {
+  const std::string dir = fresh_dir("no-checkpoint");
+  fs::create_directories(dir + "/out");
+  const CommandResult result =
+      run_process({bin("coupler"), "run", "--resume", dir + "/out"}, dir + "/log.txt");
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("has no checkpoint"), std::string::npos) << result.output;
+  EXPECT_FALSE(fs::exists(dir + "/out/run.json"));
+
+  const CommandResult missing =
+      run_process({bin("coupler"), "run", "--resume", dir + "/nowhere"}, dir + "/log2.txt");
+  EXPECT_EQ(missing.exit_code, 2) << missing.output;
+  EXPECT_NE(missing.output.find("not a run directory"), std::string::npos) << missing.output;
+
+  const CommandResult with_scene = run_process(
+      {bin("coupler"), "run", source("cases/dam_break/scene.toml"), "--resume", dir + "/out"},
+      dir + "/log3.txt");
+  EXPECT_EQ(with_scene.exit_code, 2) << with_scene.output;
+}
+
+}  // namespace
+}  // namespace porosph::testing

@@ -1,0 +1,176 @@
+// The coupler's side of checkpoints (coupler/checkpoint.h, checkpoint_state.h): its state reads
+// back bit for bit, the schedule, the confirmation handshake, the manifest and the clean-up.
+#include "coupler/checkpoint_state.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+
+#include "coupler/checkpoint.h"
+#include "proto/checkpoint_names.h"
+#include "scene/scene_loader.h"
+
+namespace porosph::coupler {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kScene = R"(
+[scene]
+name = "checkpoint_state"
+[run]
+end_time = 1.0
+output_interval = 0.1
+dp = 0.01
+dt0 = 0.001
+checkpoint_interval = 0.25
+[domain]
+min = [0.0, 0.0]
+max = [1.0, 1.0]
+[water]
+sound_speed = 10.0
+[[water.blocks]]
+shape = "box"
+min = [0.1, 0.1]
+max = [0.2, 0.2]
+)";
+
+std::string scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() /
+                       ("porosph-checkpoint-state-" + std::to_string(getpid()) + "-" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir / "checkpoint");
+  return dir.string();
+}
+
+RunRecord sample_record() {
+  RunRecord r;
+  r.scene_name = "checkpoint_state";
+  r.resolved_toml = kScene;
+  r.steps = 4321;
+  r.time = 0.1 + 0.2;  // not a short decimal
+  r.dt_min = 1.0 / 3.0 * 1e-5;
+  r.dt_max = 1e-4;
+  r.dt_sum = 0.30000000000000004;
+  r.coupler_seconds = 2.5;
+  r.ledger.impulse_to_water = {1e-300, -std::sqrt(2.0)};
+  r.ledger.impulse_to_soil = {-1e-300, std::sqrt(2.0)};
+  r.ledger.impulse_magnitude_sum = 3.0;
+  r.interaction.active = true;
+  r.interaction.evaluations = 17;
+  r.interaction.dt_limit_min = std::numeric_limits<double>::infinity();
+  r.observables["front"] = std::nan("");
+  PhaseRecord& water = r.phases["water"];
+  water.phase = "water";
+  water.h5_file = "fluid.h5";
+  water.initial.mass = 12.345678901234567;
+  water.initial.momentum = {0.1, -0.7};
+  water.initial.observables["front"] = 0.05;
+  water.last.inflow_mass = 0.125;
+  water.snapshots = {{0, 0.0, 100}, {1, 0.1000000000000001, 101}};
+  water.physics_seconds = 9.75;
+  r.resumes = 2;
+  return r;
+}
+
+TEST(CouplerCheckpointState, RoundTripsBitForBit) {
+  const RunRecord in = sample_record();
+  LoopState loop;
+  loop.output_index = 4;
+  loop.next_output_time = 0.4;
+  loop.last_output_time = 0.30000000000000004;
+  loop.outputs_pending = true;
+  loop.controller_dt = 7.123456789012345e-5;
+  RunRecord out;
+  LoopState loop_out;
+  restore_coupler_state(coupler_state_json(in, loop), "test", out, loop_out);
+  EXPECT_EQ(loop_out.output_index, 4u);
+  EXPECT_EQ(loop_out.next_output_time, loop.next_output_time);
+  EXPECT_EQ(loop_out.last_output_time, loop.last_output_time);
+  EXPECT_TRUE(loop_out.outputs_pending);
+  EXPECT_EQ(loop_out.controller_dt, loop.controller_dt);
+  EXPECT_EQ(out.resolved_toml, in.resolved_toml);
+  EXPECT_EQ(out.steps, in.steps);
+  EXPECT_EQ(out.time, in.time);
+  EXPECT_EQ(out.dt_min, in.dt_min);
+  EXPECT_EQ(out.dt_sum, in.dt_sum);
+  EXPECT_EQ(out.ledger.impulse_to_water, in.ledger.impulse_to_water);
+  EXPECT_EQ(out.ledger.impulse_to_soil, in.ledger.impulse_to_soil);
+  EXPECT_EQ(out.ledger.impulse_magnitude_sum, in.ledger.impulse_magnitude_sum);
+  EXPECT_EQ(out.interaction.evaluations, 17u);
+  EXPECT_TRUE(std::isinf(out.interaction.dt_limit_min));
+  EXPECT_TRUE(std::isnan(out.observables.at("front")));
+  const PhaseRecord& water = out.phases.at("water");
+  EXPECT_EQ(water.initial.mass, in.phases.at("water").initial.mass);
+  EXPECT_EQ(water.initial.momentum, in.phases.at("water").initial.momentum);
+  EXPECT_EQ(water.initial.observables.at("front"), 0.05);
+  EXPECT_EQ(water.last.inflow_mass, 0.125);
+  ASSERT_EQ(water.snapshots.size(), 2u);
+  EXPECT_EQ(water.snapshots[1].time, 0.1000000000000001);
+  EXPECT_EQ(water.snapshots[1].particle_count, 101u);
+  EXPECT_EQ(out.resumes, 2u);
+  EXPECT_THROW(restore_coupler_state("{}", "test", out, loop_out), std::runtime_error);
+}
+
+TEST(CheckpointKeeper, FollowsTheIntervalAndNeverTheFinalStep) {
+  const scene::Scene scene = scene::load_scene_text(kScene, "scene");
+  const std::string dir = scratch("schedule");
+  CheckpointKeeper keeper(scene, dir, {"water"}, 0, 0.0);
+  EXPECT_FALSE(keeper.due(0.0, 0.1, false, false));
+  EXPECT_TRUE(keeper.due(0.2, 0.05, false, false));  // reaches 0.25
+  EXPECT_FALSE(keeper.due(0.2, 0.05, true, false));  // but that is the last step
+  EXPECT_TRUE(keeper.due(0.0, 0.001, true, true));   // forced (a signal)
+  fs::remove_all(dir);
+}
+
+TEST(CheckpointKeeper, WritesTheManifestOnlyWhenEverySolverConfirmed) {
+  const scene::Scene scene = scene::load_scene_text(kScene, "scene");
+  const std::string dir = scratch("handshake");
+  CheckpointKeeper keeper(scene, dir, {"soil", "water"}, 0, 0.0);
+  std::map<std::string, coupling::StepState> states;
+  states["soil"].checkpoint_written = 1;
+  states["water"].checkpoint_written = 0;  // a solver without checkpoints
+
+  ASSERT_TRUE(keeper.due(0.2, 0.05, false, false));
+  EXPECT_EQ(keeper.begin(), 1u);
+  keeper.hold("{\"state\": 1}", 0.25, 250);
+  EXPECT_TRUE(keeper.pending());
+  EXPECT_NE(keeper.complete(states).find("water solver did not confirm"), std::string::npos);
+  EXPECT_FALSE(keeper.pending());
+  EXPECT_FALSE(read_checkpoint_manifest(dir).has_value());
+
+  for (const char* phase : {"soil", "water"}) {  // the solvers' files, as they would write them
+    std::ofstream(coupling::solver_checkpoint_path(dir, phase, 1)) << "x";
+    std::ofstream(coupling::solver_checkpoint_path(dir, phase, 2)) << "x";
+  }
+  states["water"].checkpoint_written = 1;
+  keeper.hold("{\"state\": 1}", 0.25, 250);
+  EXPECT_EQ(keeper.complete(states), "");
+  auto manifest = read_checkpoint_manifest(dir);
+  ASSERT_TRUE(manifest.has_value());
+  EXPECT_EQ(manifest->index, 1u);
+  EXPECT_EQ(manifest->time, 0.25);
+  EXPECT_EQ(manifest->step, 250u);
+  EXPECT_EQ(manifest->solvers.at("soil"), coupling::solver_checkpoint_path(dir, "soil", 1));
+
+  ASSERT_TRUE(keeper.due(0.45, 0.05, false, false));  // next at 0.5
+  EXPECT_EQ(keeper.begin(), 2u);
+  keeper.hold("{\"state\": 2}", 0.5, 500);
+  states["soil"].checkpoint_written = states["water"].checkpoint_written = 2;
+  EXPECT_EQ(keeper.complete(states), "");
+  manifest = read_checkpoint_manifest(dir);
+  EXPECT_EQ(manifest->index, 2u);
+  EXPECT_FALSE(fs::exists(coupling::solver_checkpoint_path(dir, "soil", 1))) << "previous kept";
+  EXPECT_FALSE(fs::exists(dir + "/checkpoint/coupler_0001.json"));
+  for (const auto& entry : fs::directory_iterator(dir + "/checkpoint")) {
+    EXPECT_EQ(entry.path().extension().string().find("tmp"), std::string::npos) << entry.path();
+  }
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace porosph::coupler
