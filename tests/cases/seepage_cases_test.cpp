@@ -93,7 +93,7 @@ const std::vector<std::string> kQuickBed = {"run.dp=0.002",
                                             "soil.materials.2.young_modulus=0.2e6"};
 
 TEST(SeepageCases, FluidizedBedExpandsToThePaperPorosity) {
-  const auto run = run_case("fluidized_bed", kQuickBed, 600);
+  const auto run = run_case("fluidized_bed", kQuickBed, 1500);
   expect_coupled_run_directory(run);
   const auto c = validation::check_fluidized_bed(run.out, 0.5);
   EXPECT_TRUE(c.porosity_in_target) << "steady porosity " << c.steady_porosity;
@@ -111,7 +111,7 @@ TEST(SeepageCases, FluidizedBedExpandsToThePaperPorosity) {
 TEST(SeepageCases, FluidizedBedWithFrozenPermeabilityDoesNotSettle) {
   auto overrides = kQuickBed;
   overrides.push_back("soil.materials.2.variable_permeability=false");
-  const auto run = run_case("fluidized_bed", overrides, 600);
+  const auto run = run_case("fluidized_bed", overrides, 1500);
   expect_coupled_run_directory(run);
   const auto c = validation::check_fluidized_bed(run.out, 0.5);
   EXPECT_GT(c.bed_rise_rate, 0.8e-3) << "rising at " << c.bed_rise_rate << " m/s";
