@@ -39,7 +39,8 @@ void ProgressLine::print(double time, std::uint64_t step, double dt, bool final)
   const double fraction = std::clamp(time / end_time_, 0.0, 1.0);
   const double steps_per_second = elapsed > 0 ? static_cast<double>(step) / elapsed : 0.0;
   const double eta = fraction > 1e-9 ? elapsed * (1.0 - fraction) / fraction : 0.0;
-  std::fprintf(stream_, "%st = %.4g / %.4g s  %5.1f%%  step %llu  dt %.3g s  %.0f steps/s  ETA %.0f s%s",
+  std::fprintf(stream_,
+               "%st = %.4g / %.4g s  %5.1f%%  step %llu  dt %.3g s  %.0f steps/s  ETA %.0f s%s",
                terminal_ ? "\r" : "", time, end_time_, 100.0 * fraction,
                static_cast<unsigned long long>(step), dt, steps_per_second, eta,
                terminal_ ? (final ? "\n" : "   ") : "\n");

@@ -18,13 +18,15 @@
 namespace porosph::testing {
 
 struct CommandResult {
-  int exit_code = -1;   ///< -1 when killed by a signal or timed out
-  std::string output;   ///< stdout and stderr together
-  double seconds = 0;   ///< wall time
+  int exit_code = -1;  ///< -1 when killed by a signal or timed out
+  std::string output;  ///< stdout and stderr together
+  double seconds = 0;  ///< wall time
 };
 
 /// Path of a built executable (build/bin/NAME).
-inline std::string bin(const std::string& name) { return std::string(POROSPH_BIN_DIR) + "/" + name; }
+inline std::string bin(const std::string& name) {
+  return std::string(POROSPH_BIN_DIR) + "/" + name;
+}
 /// Path inside the source tree.
 inline std::string source(const std::string& relative) {
   return std::string(POROSPH_SOURCE_DIR) + "/" + relative;
