@@ -11,6 +11,7 @@
 #include "fluid_solver/initial_particles.h"
 #include "fluid_solver/wall_boundary.h"
 #include "sph/integrator.h"
+#include "sph/particle_removal.h"
 
 namespace porosph::fluid {
 namespace {
@@ -268,36 +269,14 @@ bool FluidSolver<D>::leaves(std::size_t a) const {
 
 template <int D>
 void FluidSolver<D>::remove_leaving_particles() {
-  const std::int64_t n = static_cast<std::int64_t>(particles_.n_free);
-  std::int64_t leaving = 0;
-#pragma omp parallel for schedule(static) reduction(+ : leaving)
-  for (std::int64_t a = 0; a < n; ++a) leaving += leaves(a) ? 1 : 0;
-  if (leaving == 0) return;
-  keep_scratch_.assign(particles_.size(), 1);
-  for (std::int64_t a = 0; a < n; ++a) {
-    if (!leaves(a)) continue;
-    keep_scratch_[a] = 0;
-    outflow_mass_ += particles_.mass[a];
-  }
-  removed_count_ += particles_.compact(keep_scratch_);
+  const auto leaving = [this](std::size_t a) { return leaves(a); };
+  removed_count_ += sph::remove_free_particles(particles_, leaving, keep_scratch_, outflow_mass_);
 }
 
 template <int D>
 void FluidSolver<D>::remove_expired_walls() {
   if (next_wall_removal_ < 0.0 || time_ < next_wall_removal_) return;
-  FluidParticles<D>& P = particles_;
-  keep_scratch_.assign(P.size(), 1);
-  next_wall_removal_ = -1.0;
-  for (std::size_t w = P.n_free; w < P.size(); ++w) {
-    const double t = P.remove_at[w];
-    if (t < 0.0) continue;
-    if (t <= time_) {
-      keep_scratch_[w] = 0;
-    } else if (next_wall_removal_ < 0.0 || t < next_wall_removal_) {
-      next_wall_removal_ = t;
-    }
-  }
-  P.compact(keep_scratch_);
+  next_wall_removal_ = sph::remove_expired_fixed_particles(particles_, time_, keep_scratch_);
 }
 
 template class FluidSolver<2>;

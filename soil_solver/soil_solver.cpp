@@ -13,6 +13,7 @@
 #include "soil_solver/stress_update.h"
 #include "soil_solver/wall_normals.h"
 #include "sph/geometry.h"
+#include "sph/particle_removal.h"
 
 namespace porosph::soil {
 namespace {
@@ -299,37 +300,14 @@ void SoilSolver<D>::update_stresses(double dt) {
 
 template <int D>
 void SoilSolver<D>::remove_particles_outside() {
-  const SoilParticles<D>& P = particles_;
-  const std::int64_t n = static_cast<std::int64_t>(P.n_free);
-  std::int64_t outside = 0;
-#pragma omp parallel for schedule(static) reduction(+ : outside)
-  for (std::int64_t i = 0; i < n; ++i) outside += box_.outside(P.position[i]) ? 1 : 0;
-  if (outside == 0) return;
-  keep_scratch_.assign(P.size(), 1);
-  for (std::int64_t i = 0; i < n; ++i) {
-    if (!box_.outside(P.position[i])) continue;
-    keep_scratch_[i] = 0;
-    outflow_mass_ += P.mass[i];
-  }
-  removed_count_ += particles_.compact(keep_scratch_);
+  const auto outside = [this](std::size_t i) { return box_.outside(particles_.position[i]); };
+  removed_count_ += sph::remove_free_particles(particles_, outside, keep_scratch_, outflow_mass_);
 }
 
 template <int D>
 void SoilSolver<D>::remove_expired_walls() {
   if (next_wall_removal_ < 0.0 || time_ < next_wall_removal_) return;
-  SoilParticles<D>& P = particles_;
-  keep_scratch_.assign(P.size(), 1);
-  next_wall_removal_ = -1.0;
-  for (std::size_t w = P.n_free; w < P.size(); ++w) {
-    const double t = P.remove_at[w];
-    if (t < 0.0) continue;
-    if (t <= time_) {
-      keep_scratch_[w] = 0;
-    } else if (next_wall_removal_ < 0.0 || t < next_wall_removal_) {
-      next_wall_removal_ = t;
-    }
-  }
-  P.compact(keep_scratch_);
+  next_wall_removal_ = sph::remove_expired_fixed_particles(particles_, time_, keep_scratch_);
 }
 
 template <int D>

@@ -1,0 +1,53 @@
+// Removing particles from a phase's structure of arrays, shared by the water and soil solvers:
+// free particles that leave (the domain, an outflow zone) and fixed particles whose wall is taken
+// away at a given time (a gate). Works on any container with n_free, size(), mass, remove_at and
+// compact(keep) (fluid_solver/fluid_particles.h, soil_solver/soil_particles.h). `keep` is the
+// caller's scratch buffer (no allocation once it has grown).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace porosph::sph {
+
+/// Removes the free particles i in [0, n_free) with leaves(i), adding their mass to
+/// `removed_mass`. Returns how many were removed. A parallel count first: nothing is touched in
+/// the common step where no particle leaves.
+template <class Particles, class Leaves>
+std::size_t remove_free_particles(Particles& P, const Leaves& leaves,
+                                  std::vector<std::uint8_t>& keep, double& removed_mass) {
+  const std::int64_t n = static_cast<std::int64_t>(P.n_free);
+  std::int64_t leaving = 0;
+#pragma omp parallel for schedule(static) reduction(+ : leaving)
+  for (std::int64_t i = 0; i < n; ++i) leaving += leaves(static_cast<std::size_t>(i)) ? 1 : 0;
+  if (leaving == 0) return 0;
+  keep.assign(P.size(), 1);
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (!leaves(static_cast<std::size_t>(i))) continue;
+    keep[i] = 0;
+    removed_mass += P.mass[i];
+  }
+  return P.compact(keep);
+}
+
+/// Removes the fixed particles whose remove_at time (>= 0) is <= `time`. Returns the earliest
+/// removal time still pending (< 0: none).
+template <class Particles>
+double remove_expired_fixed_particles(Particles& P, double time, std::vector<std::uint8_t>& keep) {
+  keep.assign(P.size(), 1);
+  double next = -1.0;
+  for (std::size_t w = P.n_free; w < P.size(); ++w) {
+    const double t = P.remove_at[w];
+    if (t < 0.0) continue;
+    if (t <= time) {
+      keep[w] = 0;
+    } else if (next < 0.0 || t < next) {
+      next = t;
+    }
+  }
+  P.compact(keep);
+  return next;
+}
+
+}  // namespace porosph::sph
