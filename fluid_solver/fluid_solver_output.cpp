@@ -1,9 +1,9 @@
 // FluidSolver's read-only reports: the non-finite check and the snapshot fields.
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "fluid_solver/fluid_solver.h"
+#include "sph/non_finite_report.h"
 
 namespace porosph::fluid {
 
@@ -21,15 +21,10 @@ std::optional<std::string> FluidSolver<D>::find_non_finite(std::int64_t* particl
   const char* what = !P.position[first].allFinite()   ? "position"
                      : !P.velocity[first].allFinite() ? "velocity"
                                                       : "density";
-  std::ostringstream msg;
-  msg << "non-finite " << what << " of " << (P.fixed[first] ? "wall" : "water") << " particle "
-      << P.id[first] << " (x = ";
-  for (int k = 0; k < D; ++k) msg << (k ? ", " : "") << P.position[first][k];
-  msg << "; v = ";
-  for (int k = 0; k < D; ++k) msg << (k ? ", " : "") << P.velocity[first][k];
-  msg << "; rho = " << P.density[first] << ") at step " << step_ << ", t = " << time_ << " s";
   if (particle_id != nullptr) *particle_id = P.id[first];
-  return msg.str();
+  return sph::non_finite_message<D>(what, P.fixed[first] ? "wall" : "water", P.id[first],
+                                    P.position[first], P.velocity[first], P.density[first], step_,
+                                    time_);
 }
 
 template <int D>

@@ -7,13 +7,13 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "io/snapshot_writer.h"
 #include "proto/coupling_client.h"
 #include "soil_solver/soil_particles.h"
+#include "sph/non_finite_report.h"
 
 namespace porosph::soil {
 
@@ -108,15 +108,10 @@ std::optional<std::string> find_non_finite_soil(const SoilParticles<D>& P, std::
                      : !P.velocity[first].allFinite()   ? "velocity"
                      : !std::isfinite(P.density[first]) ? "density"
                                                         : "stress";
-  std::ostringstream msg;
-  msg << "non-finite " << what << " of " << (P.fixed[first] ? "fixed" : "soil") << " particle "
-      << P.id[first] << " (x = ";
-  for (int k = 0; k < D; ++k) msg << (k ? ", " : "") << P.position[first][k];
-  msg << "; v = ";
-  for (int k = 0; k < D; ++k) msg << (k ? ", " : "") << P.velocity[first][k];
-  msg << "; rho = " << P.density[first] << ") at step " << step << ", t = " << time << " s";
   if (particle_id != nullptr) *particle_id = P.id[first];
-  return msg.str();
+  return sph::non_finite_message<D>(what, P.fixed[first] ? "fixed" : "soil", P.id[first],
+                                    P.position[first], P.velocity[first], P.density[first], step,
+                                    time);
 }
 
 /// Views of the soil.h5 fields of every particle (fixed ones included).
