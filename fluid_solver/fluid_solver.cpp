@@ -10,6 +10,7 @@
 #include "fluid_solver/fluid_rates.h"
 #include "fluid_solver/initial_particles.h"
 #include "fluid_solver/wall_boundary.h"
+#include "sph/free_particle_totals.h"
 #include "sph/integrator.h"
 #include "sph/particle_removal.h"
 
@@ -159,25 +160,10 @@ void FluidSolver<D>::fill_state(coupling::StepState& out, const std::vector<doub
   }
 
   // Diagnostics of the water particles: one parallel pass.
-  double mass = 0.0, energy = 0.0, max_v2 = 0.0;
-  double momentum[D] = {}, lo[D], hi[D];
-  std::fill(lo, lo + D, std::numeric_limits<double>::infinity());
-  std::fill(hi, hi + D, -std::numeric_limits<double>::infinity());
-#pragma omp parallel for schedule(static) reduction(+ : mass, energy, momentum[:D]) \
-    reduction(max : max_v2, hi[:D]) reduction(min : lo[:D])
-  for (std::int64_t a = 0; a < n; ++a) {
-    const double v2 = P.velocity[a].squaredNorm();
-    mass += P.mass[a];
-    energy += 0.5 * P.mass[a] * v2;
-    max_v2 = std::max(max_v2, v2);
-    for (int k = 0; k < D; ++k) {
-      momentum[k] += P.mass[a] * P.velocity[a][k];
-      lo[k] = std::min(lo[k], P.position[a][k]);
-      hi[k] = std::max(hi[k], P.position[a][k]);
-    }
-  }
-  out.region_min.assign(lo, lo + D);
-  out.region_max.assign(hi, hi + D);
+  const sph::FreeParticleTotals<D> t =
+      sph::free_particle_totals<D>(P.position.data(), P.velocity.data(), P.mass.data(), P.n_free);
+  out.region_min.assign(t.lo.data(), t.lo.data() + D);
+  out.region_max.assign(t.hi.data(), t.hi.data() + D);
   coupling::Diagnostics& d = out.diagnostics;
   d.particle_count = P.size();
   d.free_count = P.n_free;
@@ -185,9 +171,9 @@ void FluidSolver<D>::fill_state(coupling::StepState& out, const std::vector<doub
   d.inflow_mass = inflow_mass_;
   d.neighbours_per_particle = neighbours_per_particle_;
   d.outflow_mass = outflow_mass_;
-  d.mass = mass;
-  d.kinetic_energy = energy;
-  d.max_speed = std::sqrt(max_v2);
+  d.mass = t.mass;
+  d.kinetic_energy = t.kinetic_energy;
+  d.max_speed = t.max_speed;
   // The state is reported before its rates are computed (solver_runtime.h): the CFL limit of the
   // current speeds, eq. 21 and the viscous limit of the latest rates.
   limits_.cfl = sph::cfl_limit(params_.cfl, params_.h, params_.eos.c0(), d.max_speed);
@@ -195,7 +181,7 @@ void FluidSolver<D>::fill_state(coupling::StepState& out, const std::vector<doub
   out.dt_viscous = limits_.viscous;
   out.dt_force = limits_.force;
   out.dt_limit = limits_.min();
-  d.momentum.assign(momentum, momentum + D);
+  d.momentum.assign(t.momentum, t.momentum + D);
   const sph::ParticleView<D> view{P.position.data(), P.velocity.data(), P.mass.data(),
                                   P.pressure.data(), P.n_free,          P.density.data()};
   for (const auto& o : observables_) d.observables[o.name] = evaluate(o, view);

@@ -13,6 +13,7 @@
 #include "io/snapshot_writer.h"
 #include "proto/coupling_client.h"
 #include "soil_solver/soil_particles.h"
+#include "sph/free_particle_totals.h"
 #include "sph/non_finite_report.h"
 
 namespace porosph::soil {
@@ -55,39 +56,21 @@ void fill_soil_overlap(const SoilParticles<D>& P, const std::vector<double>& lo,
 template <int D>
 void fill_soil_diagnostics(const SoilParticles<D>& P, std::vector<double>& region_min,
                            std::vector<double>& region_max, coupling::Diagnostics& d) {
-  const std::int64_t n = static_cast<std::int64_t>(P.n_free);
-  double mass = 0.0, energy = 0.0, max_v2 = 0.0;
-  double momentum[D] = {}, lo[D], hi[D];
-  std::fill(lo, lo + D, std::numeric_limits<double>::infinity());
-  std::fill(hi, hi + D, -std::numeric_limits<double>::infinity());
-#pragma omp parallel for schedule(static) reduction(+ : mass, energy, momentum[:D]) \
-    reduction(max : max_v2, hi[:D]) reduction(min : lo[:D])
-  for (std::int64_t i = 0; i < n; ++i) {
-    const double v2 = P.velocity[i].squaredNorm();
-    mass += P.mass[i];
-    energy += 0.5 * P.mass[i] * v2;
-    max_v2 = std::max(max_v2, v2);
-    for (int k = 0; k < D; ++k) {
-      momentum[k] += P.mass[i] * P.velocity[i][k];
-      lo[k] = std::min(lo[k], P.position[i][k]);
-      hi[k] = std::max(hi[k], P.position[i][k]);
-    }
-  }
+  sph::FreeParticleTotals<D> t =
+      sph::free_particle_totals<D>(P.position.data(), P.velocity.data(), P.mass.data(), P.n_free);
   for (std::size_t i = P.n_free; i < P.size(); ++i) {  // fixed soil interacts with water too
     if (P.material[i] < 0) continue;
-    for (int k = 0; k < D; ++k) {
-      lo[k] = std::min(lo[k], P.position[i][k]);
-      hi[k] = std::max(hi[k], P.position[i][k]);
-    }
+    t.lo = t.lo.cwiseMin(P.position[i]);
+    t.hi = t.hi.cwiseMax(P.position[i]);
   }
-  region_min.assign(lo, lo + D);
-  region_max.assign(hi, hi + D);
+  region_min.assign(t.lo.data(), t.lo.data() + D);
+  region_max.assign(t.hi.data(), t.hi.data() + D);
   d.particle_count = P.size();
   d.free_count = P.n_free;
-  d.mass = mass;
-  d.kinetic_energy = energy;
-  d.max_speed = std::sqrt(max_v2);
-  d.momentum.assign(momentum, momentum + D);
+  d.mass = t.mass;
+  d.kinetic_energy = t.kinetic_energy;
+  d.max_speed = t.max_speed;
+  d.momentum.assign(t.momentum, t.momentum + D);
 }
 
 /// "non-finite stress of soil particle 12 (x = ...) at step 3, t = ... s" for the first particle
