@@ -53,51 +53,7 @@ void NeighbourList<D>::setup_grid(const Vec<D>* x) {
       hi = hi.cwiseMax(thi);
     }
   }
-  // Cell size >= support; grown if the grid would have far more cells than particles (sparse
-  // particles in a large box), which only costs candidate checks, never correctness.
-  const double max_cells = std::max<double>(64.0, 4.0 * static_cast<double>(n_));
-  double cell = support_;
-  for (int attempt = 0; attempt < 64; ++attempt) {
-    double total = 1.0;
-    for (int k = 0; k < D; ++k) {
-      std::int64_t nk = 1;
-      if (box_.periodic[k]) {
-        origin_[k] = box_.min[k];
-        nk = std::max<std::int64_t>(1, static_cast<std::int64_t>(box_.length(k) / cell));
-        inv_cell_size_[k] = static_cast<double>(nk) / box_.length(k);
-      } else {
-        if (!(lo[k] <= hi[k])) lo[k] = hi[k] = 0.0;  // no finite coordinate at all
-        origin_[k] = lo[k];
-        nk = static_cast<std::int64_t>((hi[k] - lo[k]) / cell) + 1;
-        inv_cell_size_[k] = 1.0 / cell;
-      }
-      cells_per_axis_[k] = nk;
-      total *= static_cast<double>(nk);
-    }
-    if (total <= max_cells) break;
-    cell *= 1.5;
-  }
-  cell_count_ = 1;
-  for (int k = 0; k < D; ++k) cell_count_ *= cells_per_axis_[k];
-}
-
-template <int D>
-std::int64_t NeighbourList<D>::cell_index(const Vec<D>& x) const {
-  std::int64_t linear = 0, stride = 1;
-  for (int k = 0; k < D; ++k) {
-    const double s = (x[k] - origin_[k]) * inv_cell_size_[k];
-    const std::int64_t nk = cells_per_axis_[k];
-    // Clamping keeps stray (or non-finite) coordinates in the grid; adjacent cells stay adjacent.
-    std::int64_t c = 0;
-    if (s >= static_cast<double>(nk)) {
-      c = nk - 1;
-    } else if (s > 0.0) {
-      c = static_cast<std::int64_t>(s);
-    }
-    linear += c * stride;
-    stride *= nk;
-  }
-  return linear;
+  grid_.lay_out(lo, hi, support_, box_, n_);
 }
 
 template <int D>
@@ -107,11 +63,11 @@ void NeighbourList<D>::sort_into_cells(const Vec<D>* x) {
   cell_of_.resize(n_);
   sorted_index_.resize(n_);
   sorted_position_.resize(n_);
-  cell_start_.resize(cell_count_ + 1);
-  cell_free_end_.resize(cell_count_);
+  cell_start_.resize(grid_.cell_count + 1);
+  cell_free_end_.resize(grid_.cell_count);
   const int max_threads = omp_get_max_threads();
   if (static_cast<int>(thread_counts_.size()) < max_threads) thread_counts_.resize(max_threads);
-  const std::int64_t cells = cell_count_;
+  const std::int64_t cells = grid_.cell_count;
 #pragma omp parallel
   {
     const std::size_t t = omp_get_thread_num(), threads = omp_get_num_threads();
@@ -119,7 +75,7 @@ void NeighbourList<D>::sort_into_cells(const Vec<D>* x) {
     std::vector<std::int32_t>& count = thread_counts_[t];
     count.assign(2 * cells, 0);  // [0, cells): all particles, [cells, 2 cells): free ones
     for (std::size_t a = a0; a < a1; ++a) {
-      const std::int64_t c = cell_index(x[a]);
+      const std::int64_t c = grid_.cell_of(x[a]);
       cell_of_[a] = c;
       ++count[c];
       if (a < n_free_) ++count[cells + c];
@@ -156,7 +112,7 @@ int NeighbourList<D>::stencil_of(std::int64_t cell, std::int64_t* out) const {
   int axis_count[D];
   std::int64_t rest = cell;
   for (int k = 0; k < D; ++k) {
-    const std::int64_t nk = cells_per_axis_[k];
+    const std::int64_t nk = grid_.cells_per_axis[k];
     const std::int64_t c = rest % nk;
     rest /= nk;
     int m = 0;
@@ -181,7 +137,7 @@ int NeighbourList<D>::stencil_of(std::int64_t cell, std::int64_t* out) const {
     std::int64_t linear = 0, stride = 1;
     for (int k = 0; k < D; ++k) {
       linear += axis_cells[k][idx[k]] * stride;
-      stride *= cells_per_axis_[k];
+      stride *= grid_.cells_per_axis[k];
     }
     out[count++] = linear;
     int k = 0;

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "sph/cell_grid.h"
 #include "sph/domain_box.h"
 #include "sph/vector.h"
 
@@ -69,15 +70,12 @@ class NeighbourList {
   template <bool kPeriodic>
   void fill_lists(const Vec<D>* x);
   int stencil_of(std::int64_t cell, std::int64_t* out) const;
-  std::int64_t cell_index(const Vec<D>& x) const;
 
   std::size_t n_ = 0, n_free_ = 0, pair_count_ = 0;
   double support_ = 0;
   DomainBox<D> box_;
   // grid
-  Vec<D> origin_, inv_cell_size_;
-  std::int64_t cells_per_axis_[D] = {};
-  std::int64_t cell_count_ = 0;
+  CellGrid<D> grid_;
   // counting sort
   std::vector<std::int64_t> cell_of_;                     ///< per particle
   std::vector<std::int32_t> cell_start_;                  ///< per cell + 1, into sorted arrays

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "sph/cell_grid.h"
 #include "sph/domain_box.h"
 #include "sph/vector.h"
 
@@ -35,12 +36,10 @@ class CrossNeighbours {
 
  private:
   void setup_grid(const double* positions, std::size_t n);
-  std::int64_t cell_of(const sph::Vec<D>& x) const;
 
   double support_ = 0.0;
   sph::DomainBox<D> box_;
-  sph::Vec<D> origin_ = sph::Vec<D>::Zero(), inv_cell_size_ = sph::Vec<D>::Ones();
-  std::int64_t cells_per_axis_[D] = {};
+  sph::CellGrid<D> grid_;
   std::vector<std::int64_t> cell_of_particle_;
   std::vector<std::int32_t> cell_start_;  ///< per cell + 1: first slot of the cell
   std::vector<std::int32_t> order_;
@@ -56,8 +55,8 @@ void CrossNeighbours<D>::for_each_within(sph::Vec<D> x, Visit&& visit) const {
   std::int64_t axis_cells[D][3];
   int axis_count[D];
   for (int k = 0; k < D; ++k) {
-    const std::int64_t nk = cells_per_axis_[k];
-    const double s = (x[k] - origin_[k]) * inv_cell_size_[k];
+    const std::int64_t nk = grid_.cells_per_axis[k];
+    const double s = (x[k] - grid_.origin[k]) * grid_.inv_cell_size[k];
     int m = 0;
     if (box_.periodic[k]) {
       const std::int64_t c = std::min<std::int64_t>(
@@ -86,7 +85,7 @@ void CrossNeighbours<D>::for_each_within(sph::Vec<D> x, Visit&& visit) const {
     std::int64_t cell = 0, stride = 1;
     for (int k = 0; k < D; ++k) {
       cell += axis_cells[k][index[k]] * stride;
-      stride *= cells_per_axis_[k];
+      stride *= grid_.cells_per_axis[k];
     }
     for (std::int32_t slot = cell_start_[cell]; slot < cell_start_[cell + 1]; ++slot) {
       sph::Vec<D> dx = x - sorted_position_[slot];
