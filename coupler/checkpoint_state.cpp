@@ -64,7 +64,8 @@ json diagnostics_state(const coupling::Diagnostics& d) {
           {"observables", exact_map(d.observables)},
           {"physics_seconds", exact(d.physics_seconds)},
           {"inflow_mass", exact(d.inflow_mass)},
-          {"outflow_mass", exact(d.outflow_mass)}};
+          {"outflow_mass", exact(d.outflow_mass)},
+          {"neighbours_per_particle", exact(d.neighbours_per_particle)}};
 }
 
 coupling::Diagnostics diagnostics_of(const json& j) {
@@ -80,6 +81,7 @@ coupling::Diagnostics diagnostics_of(const json& j) {
   d.physics_seconds = exact_of(j.at("physics_seconds"));
   d.inflow_mass = exact_of(j.at("inflow_mass"));
   d.outflow_mass = exact_of(j.at("outflow_mass"));
+  d.neighbours_per_particle = exact_of(j.at("neighbours_per_particle"));
   return d;
 }
 
