@@ -5,11 +5,15 @@
 //   porosph_validate granular_collapse RUN_DIR
 //   porosph_validate darcy_column RUN_DIR
 //   porosph_validate fluidized_bed RUN_DIR [--window SECONDS]
+//   porosph_validate rockfill_overtopping RUN_DIR [--series FILE]
+//   porosph_validate hydraulic_heave RUN_DIR [--series FILE]
 // Exit code 0 when the target is met, 1 when not, 2 on unreadable input.
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <fstream>
 
 #include "tools/validation/case_checks.h"
+#include "tools/validation/dam_case_checks.h"
 #include "tools/validation/fluidized_bed_check.h"
 #include "tools/validation/seepage_checks.h"
 #include "tools/validation/soil_checks.h"
@@ -19,6 +23,22 @@
 #endif
 
 namespace {
+
+/// One machine-readable line per check, read by tools/validation/report.py:
+/// "summary<TAB>quantity<TAB>value<TAB>reference<TAB>error<TAB>target<TAB>met|not met|no target".
+void print_summary(const std::string& quantity, const std::string& value,
+                   const std::string& reference, const std::string& error,
+                   const std::string& target, int met) {
+  std::printf("summary\t%s\t%s\t%s\t%s\t%s\t%s\n", quantity.c_str(), value.c_str(),
+              reference.c_str(), error.c_str(), target.c_str(),
+              met < 0 ? "no target" : (met ? "met" : "not met"));
+}
+
+std::string fmt(const char* format, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, format, value);
+  return buffer;
+}
 
 int report_soil_column(const porosph::validation::SoilColumnCheck& c) {
   std::printf(
@@ -31,6 +51,9 @@ int report_soil_column(const porosph::validation::SoilColumnCheck& c) {
       c.time, c.particles, 100 * c.max_rel_error, 100 * c.mean_rel_error, 100 * c.max_row_rel_error,
       c.mean_ratio, c.min_ratio, c.max_ratio, c.k0_elastic, c.k0_jaky, c.mean_out_of_plane_ratio,
       c.max_speed);
+  print_summary("sigma_v error per particle (max)", fmt("%.2f %%", 100 * c.max_rel_error),
+                "rho g (H - y)", fmt("%.2f %%", 100 * c.max_rel_error), "3 %",
+                c.max_rel_error <= 0.03);
   return c.max_rel_error <= 0.03 ? 0 : 1;
 }
 
@@ -45,6 +68,8 @@ int report_collapse(const porosph::validation::CollapseMeasurement& c) {
     std::printf("failure surface angle (moved > %.2f mm) %.1f deg\n", 1000 * c.thresholds[t],
                 c.failure_angle_deg[t]);
   }
+  print_summary("run-out from the back wall", fmt("%.3f m", c.runout),
+                "Bui et al. (2008): not available here", "-", "-", -1);
   return 0;
 }
 
@@ -55,6 +80,9 @@ int report_darcy_column(const porosph::validation::DarcyColumnCheck& c) {
       " (target 2%%)\nquadratic share of i: %.2f; change over the last output %.2e\n",
       c.seepage.c_str(), c.time, c.a, c.b, c.expected, c.simulated, 100 * c.rel_error,
       c.quadratic_share, c.settling);
+  print_summary("steady seepage velocity (" + c.seepage + ")", fmt("%.5g m/s", c.simulated),
+                fmt("%.5g m/s (i = a q + b q^2 = 1)", c.expected),
+                fmt("%.2f %%", 100 * c.rel_error), "2 %", c.rel_error <= 0.02);
   return c.rel_error <= 0.02 ? 0 : 1;
 }
 
@@ -80,7 +108,92 @@ int report_fluidized_bed(const porosph::validation::FluidizedBedCheck& c) {
     std::printf("onset of expansion (porosity +0.005) at t = %.2f s, Q = %.4f l/s\n",
                 c.expansion_time, 1e3 * c.expansion_flow_rate);
   }
+  print_summary("steady mean sand porosity", fmt("%.4f", c.steady_porosity),
+                "0.51 (experiment; paper's SPH 0.508)", fmt("%+.4f", c.steady_porosity - 0.51),
+                "+- 0.02", c.porosity_in_target);
+  print_summary("onset of fluidisation",
+                c.onset_flow_rate >= 0 ? fmt("%.4f l/s", 1e3 * c.onset_flow_rate) : "none",
+                "0.07 .. 0.12 l/s (experiment)", "-", "inside the range", c.onset_in_target);
   return c.porosity_in_target && c.onset_in_target ? 0 : 1;
+}
+
+/// Writes columns of equal length as CSV (the report tool plots them); nothing when path is empty.
+void write_series(const std::string& path, const std::vector<std::string>& names,
+                  const std::vector<const std::vector<double>*>& columns) {
+  if (path.empty()) return;
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("cannot write " + path);
+  for (std::size_t k = 0; k < names.size(); ++k) out << (k ? "," : "") << names[k];
+  out << "\n";
+  for (std::size_t i = 0; i < columns[0]->size(); ++i) {
+    for (std::size_t k = 0; k < columns.size(); ++k) out << (k ? "," : "") << (*columns[k])[i];
+    out << "\n";
+  }
+}
+
+int report_rockfill(const porosph::validation::RockfillCheck& c, const std::string& series) {
+  std::printf(
+      "rockfill_overtopping at t = %.2f s: Q = %.2f l/s, q = Q / W = %.3e m^2/s (flume width W = "
+      "%.2f m"
+      " = cross_section / sheet), %zu soil particles, dp %.3f m, toe x = %.3f m\n",
+      c.time, 1e3 * c.flow_rate, c.discharge_per_metre, c.flume_width, c.particles, c.dp, c.x_toe);
+  for (int k = 0; k < 3; ++k) {
+    std::printf("B (moved > %.1f mm = %.1f D15) = %.3f m\n", 1e3 * c.thresholds[k],
+                c.thresholds[k] / c.d15, c.b[k]);
+  }
+  const double b = c.b[1];
+  const std::size_t n = c.times.size();
+  if (n > 10) {
+    std::printf(
+        "B at D15 over the run: %.3f m at t = %.1f s, %.3f m at t = %.1f s, %.3f at the end\n",
+        c.b_history[n / 2], c.times[n / 2], c.b_history[(9 * n) / 10], c.times[(9 * n) / 10], b);
+  }
+  for (std::size_t k = 0; k < c.levels.size(); ++k) {
+    std::printf("steady water level %s: %.3f m\n", c.level_names[k].c_str(), c.levels[k]);
+  }
+  write_series(series, {"t", "B"}, {&c.times, &c.b_history});
+  if (c.b_experiment < 0) {
+    std::printf("no experiment for this flow rate\n");
+    print_summary("B parameter", fmt("%.3f m", b), "none for this Q", "-", "-", -1);
+    return 0;
+  }
+  const double error = (b - c.b_experiment) / c.b_experiment;
+  std::printf("B = %.3f m vs experiment %.2f m: error %+.1f%% (target 10%%; paper's SPH %.3f m)\n",
+              b, c.b_experiment, 100 * error, c.b_paper_sph);
+  print_summary(fmt("B parameter, Q = %.2f l/s", 1e3 * c.flow_rate), fmt("%.3f m", b),
+                fmt("%.2f m (experiment)", c.b_experiment), fmt("%+.1f %%", 100 * error), "10 %",
+                std::abs(error) <= 0.10);
+  return std::abs(error) <= 0.10 ? 0 : 1;
+}
+
+int report_heave(const porosph::validation::HeaveCheck& c, const std::string& series) {
+  std::printf(
+      "hydraulic_heave: damping ends at %.3f s (times below are counted from there), pile tip y ="
+      " %.3f m\n%8s %14s %12s\n",
+      c.damping_end, c.pile_tip, "t[s]", "gravel_bottom", "advance[m]");
+  for (std::size_t i = 0; i < c.times.size(); i += 10) {
+    std::printf("%8.2f %14.4f %12.4f\n", c.times[i], c.gravel_bottom[i],
+                c.gravel_top_of_sand - c.gravel_bottom[i]);
+  }
+  std::printf("overall head (upstream - downstream level): %.4f m at the start\n", c.head_at_start);
+  write_series(series, {"t", "gravel_bottom"}, {&c.times, &c.gravel_bottom});
+  if (c.failure_time < 0) {
+    std::printf(
+        "no complete failure by t = %.2f s (the gravel next to the pile never reached the"
+        " pile tip); experiment 4.4 s\n",
+        c.end_time);
+    print_summary("time of complete failure", fmt("none by %.2f s", c.end_time),
+                  "4.4 s (experiment)", "-", "10 %", 0);
+    return 1;
+  }
+  const double error = (c.failure_time - 4.4) / 4.4;
+  std::printf(
+      "complete failure (gravel next to the pile at the pile tip) at t = %.2f s, head %.4f m;"
+      " experiment 4.4 s: error %+.1f%% (target 10%%)\n",
+      c.failure_time, c.head_at_failure, 100 * error);
+  print_summary("time of complete failure", fmt("%.2f s", c.failure_time), "4.4 s (experiment)",
+                fmt("%+.1f %%", 100 * error), "10 %", std::abs(error) <= 0.10);
+  return std::abs(error) <= 0.10 ? 0 : 1;
 }
 
 }  // namespace
@@ -107,8 +220,17 @@ int main(int argc, char** argv) {
   bed->add_option("run_dir", run_dir)->required();
   double window = 1.0;
   bed->add_option("--window", window, "steady window at the end of the run [s]");
+  std::string series;
+  auto* rockfill = app.add_subcommand("rockfill_overtopping", "B parameter, phreatic levels");
+  rockfill->add_option("run_dir", run_dir)->required();
+  rockfill->add_option("--series", series, "write B(t) as CSV to this file");
+  auto* heave = app.add_subcommand("hydraulic_heave", "failure time, head, gravel advance");
+  heave->add_option("run_dir", run_dir)->required();
+  heave->add_option("--series", series, "write the gravel bottom vs time as CSV to this file");
   CLI11_PARSE(app, argc, argv);
   try {
+    if (*rockfill) return report_rockfill(porosph::validation::check_rockfill(run_dir), series);
+    if (*heave) return report_heave(porosph::validation::check_heave(run_dir), series);
     if (*bed) {
       return report_fluidized_bed(porosph::validation::check_fluidized_bed(run_dir, window));
     }
@@ -127,6 +249,9 @@ int main(int argc, char** argv) {
                   c.max_abs_error);
       std::printf("diagnostic: a release delay of dT = %.2f would leave mean |dZ| = %.3f\n",
                   c.best_shift, c.mean_abs_error_shifted);
+      print_summary("mean |dZ| of the surge front", fmt("%.3f", c.mean_abs_error),
+                    "Martin & Moyce (1952)", fmt("%.3f", c.mean_abs_error), "<= 0.10",
+                    c.mean_abs_error <= 0.10);
       return c.mean_abs_error <= 0.10 ? 0 : 1;
     }
     const auto h = porosph::validation::check_hydrostatic(run_dir);
@@ -144,6 +269,11 @@ int main(int argc, char** argv) {
                     100 * (row.mean - row.exact) / row.exact, 100 * row.max_rel_error);
       }
     }
+    print_summary("pressure error per particle (max)", fmt("%.2f %%", 100 * h.max_rel_error),
+                  "rho g (H - z)", fmt("%.2f %%", 100 * h.max_rel_error), "2 %",
+                  h.max_rel_error <= 0.02);
+    print_summary("max speed / sqrt(g H)", fmt("%.3f %%", 100 * h.max_speed_ratio), "0",
+                  fmt("%.3f %%", 100 * h.max_speed_ratio), "1 %", h.max_speed_ratio <= 0.01);
     return h.max_rel_error <= 0.02 && h.max_speed_ratio <= 0.01 ? 0 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "porosph_validate: %s\n", e.what());

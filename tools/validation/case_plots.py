@@ -1,0 +1,212 @@
+"""Figures of the validation report (tools/validation/report.py): one function per case, each
+reading a finished run directory (timeseries.csv, fluid.h5 / soil.h5, validate_series.csv) and
+writing PNG files; returns their paths."""
+import csv
+import json
+import math
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import h5py  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def read_csv(path):
+    with open(path) as f:
+        rows = [r for r in csv.reader(line for line in f if not line.startswith("#"))]
+    names, data = rows[0], np.array([[float(x) if x else math.nan for x in r] for r in rows[1:]])
+    return {n: data[:, k] for k, n in enumerate(names)} if len(data) else {n: [] for n in names}
+
+
+def last_snapshot(path):
+    f = h5py.File(path, "r")
+    key = sorted(f["snapshots"].keys())[-1]
+    return f["snapshots"][key], f["snapshots"][key].attrs["time"]
+
+
+def run_json(out):
+    with open(os.path.join(out, "run.json")) as f:
+        return json.load(f)
+
+
+def save(fig, figures, name, suffix):
+    path = os.path.join(figures, f"{name}_{suffix}.png")
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    return path
+
+
+def dam_break(out, figures, name):
+    ts = read_csv(os.path.join(out, "timeseries.csv"))
+    ref = read_csv(os.path.join(ROOT, "cases", "dam_break", "reference.csv"))
+    params = run_json(out)["parameters"]
+    block = params["water"]["blocks"][0]
+    a = block["max"][0] - block["min"][0]
+    g = abs(params["run"]["gravity"][1])
+    dp = params["run"]["dp"]
+    fig, ax = plt.subplots(figsize=(5, 3.5))
+    ax.plot(ts["t"] * math.sqrt(2 * g / a), (ts["front"] + dp / 2) / a, label="PoroSPH")
+    ax.plot(ref["T"], ref["Z"], "o", label="Martin & Moyce (1952)")
+    ax.set_xlabel("T = t sqrt(2g/a)")
+    ax.set_ylabel("Z = front / a")
+    ax.legend()
+    return [save(fig, figures, name, "front")]
+
+
+def hydrostatic_tank(out, figures, name):
+    snap, t = last_snapshot(os.path.join(out, "fluid.h5"))
+    free = snap["fixed"][:] == 0
+    y, p = snap["position"][:][free, 1], snap["pressure"][:][free]
+    params = run_json(out)["parameters"]
+    rho, g = params["water"]["rho0"], abs(params["run"]["gravity"][1])
+    top = params["water"]["blocks"][0]["max"][1]
+    fig, ax = plt.subplots(figsize=(5, 3.5))
+    ax.plot(p, y, ".", ms=2, label=f"PoroSPH, t = {t:.2f} s")
+    depth = np.linspace(0, top, 50)
+    ax.plot(rho * g * (top - depth), depth, "k-", label="rho g (H - z)")
+    ax.set_xlabel("pressure [Pa]")
+    ax.set_ylabel("z [m]")
+    ax.legend()
+    return [save(fig, figures, name, "pressure")]
+
+
+def soil_column(out, figures, name):
+    snap, t = last_snapshot(os.path.join(out, "soil.h5"))
+    free = snap["fixed"][:] == 0
+    y = snap["position"][:][free, 1]
+    stress = snap["stress"][:][free]
+    params = run_json(out)["parameters"]
+    rho = params["soil"]["materials"][0]["density"]
+    g = abs(params["run"]["gravity"][1])
+    top = params["soil"]["blocks"][0]["max"][1]
+    syy = stress[:, 4] if stress.shape[1] == 9 else stress[:, 1]
+    fig, ax = plt.subplots(figsize=(5, 3.5))
+    ax.plot(-syy, y, ".", ms=2, label=f"PoroSPH, t = {t:.2f} s")
+    depth = np.linspace(0, top, 50)
+    ax.plot(rho * g * (top - depth), depth, "k-", label="rho g (H - y)")
+    ax.set_xlabel("vertical stress, compression [Pa]")
+    ax.set_ylabel("y [m]")
+    ax.legend()
+    return [save(fig, figures, name, "stress")]
+
+
+def granular_collapse(out, figures, name):
+    snap, t = last_snapshot(os.path.join(out, "soil.h5"))
+    free = snap["fixed"][:] == 0
+    x = snap["position"][:][free]
+    u = np.linalg.norm(snap["displacement"][:][free], axis=1)
+    fig, ax = plt.subplots(figsize=(7, 2.5))
+    sc = ax.scatter(x[:, 0], x[:, 1], c=u, s=1, cmap="viridis")
+    fig.colorbar(sc, ax=ax, label="displacement [m]")
+    ax.set_aspect("equal")
+    ax.set_title(f"deposit at t = {t:.2f} s")
+    return [save(fig, figures, name, "deposit")]
+
+
+def darcy_column(out, figures, name):
+    ts = read_csv(os.path.join(out, "timeseries.csv"))
+    fig, ax = plt.subplots(figsize=(5, 3.5))
+    ax.plot(ts["t"], -ts["darcy_velocity"], label="PoroSPH mean water velocity")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("q [m/s]")
+    ax.legend()
+    return [save(fig, figures, name, "velocity")]
+
+
+def fluidized_bed(out, figures, name):
+    ts = read_csv(os.path.join(out, "timeseries.csv"))
+    fig, axes = plt.subplots(1, 2, figsize=(9, 3.5))
+    axes[0].plot(ts["t"], ts["sand_porosity"], label="PoroSPH")
+    axes[0].axhline(0.51, color="k", ls="--", label="experiment 0.51")
+    axes[0].set_xlabel("t [s]")
+    axes[0].set_ylabel("mean sand porosity")
+    axes[0].legend()
+    axes[1].plot(ts["t"], -ts["sand_stress_yy"])
+    axes[1].set_xlabel("t [s]")
+    axes[1].set_ylabel("vertical effective stress, lower sand [Pa]")
+    return [save(fig, figures, name, "porosity")]
+
+
+def rockfill(out, figures, name):
+    paths = []
+    series = os.path.join(out, "validate_series.csv")
+    run = run_json(out)
+    q = run["parameters"]["water"]["inflow"][0]["flow_rate"]
+    b_exp = {0.01936: 0.32, 0.03045: 0.68}.get(round(q, 5))
+    if os.path.exists(series):
+        s = read_csv(series)
+        fig, ax = plt.subplots(figsize=(5, 3.5))
+        ax.plot(s["t"], s["B"], label="PoroSPH (moved > D15)")
+        if b_exp:
+            ax.axhline(b_exp, color="k", ls="--", label=f"experiment {b_exp} m")
+        ax.set_xlabel("t [s]")
+        ax.set_ylabel("B [m]")
+        ax.legend()
+        paths.append(save(fig, figures, name, "B"))
+    snap, t = last_snapshot(os.path.join(out, "soil.h5"))
+    free = snap["fixed"][:] == 0
+    x = snap["position"][:][free]
+    n = snap["porosity"][:][free]
+    water, _ = last_snapshot(os.path.join(out, "fluid.h5"))
+    wfree = water["fixed"][:] == 0
+    w = water["position"][:][wfree]
+    fig, ax = plt.subplots(figsize=(9, 3.5))
+    sc = ax.scatter(x[:, 0], x[:, 1], c=n, s=3, cmap="copper_r")
+    fig.colorbar(sc, ax=ax, label="porosity")
+    ax.scatter(w[:, 0], w[:, 1], s=1, c="tab:blue", alpha=0.4, label="water")
+    ax.set_aspect("equal")
+    ax.set_xlim(-0.1, 3.3)
+    ax.set_title(f"porosity and water at t = {t:.1f} s")
+    paths.append(save(fig, figures, name, "porosity"))
+    return paths
+
+
+def hydraulic_heave(out, figures, name):
+    paths = []
+    ts = read_csv(os.path.join(out, "timeseries.csv"))
+    damping = run_json(out)["parameters"]["soil"]["damping_duration"]
+    fig, axes = plt.subplots(1, 2, figsize=(9, 3.5))
+    axes[0].plot(ts["t"] - damping, ts["upstream_level"] - ts["downstream_level"])
+    axes[0].set_xlabel("t after the damping stage [s]")
+    axes[0].set_ylabel("overall head [m]")
+    series = os.path.join(out, "validate_series.csv")
+    if os.path.exists(series):
+        s = read_csv(series)
+        axes[1].plot(s["t"], s["gravel_bottom"][0] - s["gravel_bottom"], label="PoroSPH")
+        axes[1].axvline(4.4, color="k", ls="--", label="experiment: failure at 4.4 s")
+        axes[1].set_xlabel("t after the damping stage [s]")
+        axes[1].set_ylabel("advance of the gravel bottom at the pile [m]")
+        axes[1].legend()
+    paths.append(save(fig, figures, name, "head_gravel"))
+    snap, t = last_snapshot(os.path.join(out, "soil.h5"))
+    free = snap["fixed"][:] == 0
+    x = snap["position"][:][free]
+    m = snap["material"][:][free]
+    fig, ax = plt.subplots(figsize=(8, 2.5))
+    ax.scatter(x[m == 0, 0], x[m == 0, 1], s=2, c="goldenrod", label="sand")
+    ax.scatter(x[m == 1, 0], x[m == 1, 1], s=2, c="dimgray", label="gravel")
+    ax.set_aspect("equal")
+    ax.legend(loc="upper left")
+    ax.set_title(f"soil at t = {t - damping:.2f} s after the damping stage")
+    paths.append(save(fig, figures, name, "soil"))
+    return paths
+
+
+def heave_grid(rows, figures):
+    """rows: (phi_sand, phi_gravel, 'T s' or 'none by ...')."""
+    fig, ax = plt.subplots(figsize=(5, 3.5))
+    for g in sorted({r[1] for r in rows}):
+        pts = [(s, float(v.split()[0])) for (s, gg, v) in rows if gg == g and v[0].isdigit()]
+        if pts:
+            ax.plot(*zip(*sorted(pts)), "o-", label=f"gravel phi {g}")
+    ax.axhline(4.4, color="k", ls="--", label="experiment 4.4 s")
+    ax.set_xlabel("sand friction angle [deg]")
+    ax.set_ylabel("time of complete failure [s]")
+    ax.legend()
+    return save(fig, figures, "hydraulic_heave", "grid")

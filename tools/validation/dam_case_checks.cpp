@@ -1,0 +1,171 @@
+#include "tools/validation/dam_case_checks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "io/snapshot_reader.h"
+#include "tools/validation/run_directory.h"
+
+namespace porosph::validation {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+SoilParticles2D read_soil(const io::SnapshotReader& reader, std::uint32_t index) {
+  SoilParticles2D s;
+  const auto position = reader.read_f64(index, "position");
+  if (position.cols != 2) throw std::runtime_error(reader.path() + ": the dam cases are 2D");
+  s.position = position.values;
+  s.displacement = reader.read_f64(index, "displacement").values;
+  s.fixed = reader.read_u8(index, "fixed").values;
+  s.material = reader.read_i64(index, "material").values;
+  return s;
+}
+
+/// Mean of a time-series column over the rows with t >= t_from (NaN rows skipped).
+double mean_from(const TimeSeries& ts, const std::string& name, double t_from) {
+  const auto& t = ts.column("t");
+  const auto& v = ts.column(name);
+  double sum = 0;
+  int n = 0;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (t[i] >= t_from && std::isfinite(v[i])) {
+      sum += v[i];
+      ++n;
+    }
+  }
+  return n ? sum / n : kNaN;
+}
+
+int material_index(const nlohmann::json& soil, const std::string& name) {
+  const auto& materials = soil.at("materials");
+  for (std::size_t m = 0; m < materials.size(); ++m)
+    if (materials[m].at("name").get<std::string>() == name) return static_cast<int>(m);
+  throw std::runtime_error("run.json: no soil material named '" + name + "'");
+}
+
+}  // namespace
+
+double rockfill_b(const SoilParticles2D& soil, double x_toe, double x_crest, double threshold) {
+  double x_most_upstream = x_toe;
+  for (std::size_t i = 0; i < soil.size(); ++i) {
+    if (soil.fixed[i]) continue;
+    const double ux = soil.displacement[2 * i], uy = soil.displacement[2 * i + 1];
+    const double x0 = soil.position[2 * i] - ux;
+    if (x0 < x_crest || std::hypot(ux, uy) <= threshold) continue;
+    x_most_upstream = std::min(x_most_upstream, x0);
+  }
+  return x_toe - x_most_upstream;
+}
+
+double lowest_in_band(const SoilParticles2D& soil, std::int64_t material, double x_lo,
+                      double x_hi) {
+  double lowest = kNaN;
+  for (std::size_t i = 0; i < soil.size(); ++i) {
+    const double x = soil.position[2 * i], y = soil.position[2 * i + 1];
+    if (soil.fixed[i] || soil.material[i] != material || x < x_lo || x > x_hi) continue;
+    if (!(y >= lowest)) lowest = y;  // also replaces the initial NaN
+  }
+  return lowest;
+}
+
+RockfillCheck check_rockfill(const std::string& run_dir) {
+  const auto run = read_run_json(run_dir);
+  const auto& p = run.at("parameters");
+  RockfillCheck c;
+  c.dp = p.at("run").at("dp").get<double>();
+  const auto& soil = p.at("soil");
+  c.d15 = soil.at("materials").at(0).at("d15").get<double>();
+  const auto& inflow = p.at("water").at("inflow").at(0);
+  c.flow_rate = inflow.at("flow_rate").get<double>();
+  const double sheet = inflow.at("max").at(1).get<double>() - inflow.at("min").at(1).get<double>();
+  c.flume_width = inflow.at("cross_section").get<double>() / sheet;
+  c.discharge_per_metre = c.flow_rate / c.flume_width;
+  // Toe: the shell polygon's vertex furthest downstream; crest end: the highest vertex furthest
+  // downstream (the top of the slope).
+  const auto& vertices = soil.at("blocks").at(0).at("vertices");
+  double y_top = -1e300;
+  for (const auto& v : vertices) y_top = std::max(y_top, v.at(1).get<double>());
+  c.x_toe = -1e300;
+  c.x_crest = -1e300;
+  for (const auto& v : vertices) {
+    c.x_toe = std::max(c.x_toe, v.at(0).get<double>());
+    if (v.at(1).get<double>() == y_top) c.x_crest = std::max(c.x_crest, v.at(0).get<double>());
+  }
+  c.thresholds = {0.5 * c.d15, c.d15, 2 * c.d15};
+  if (std::abs(c.flow_rate - 0.01936) < 1e-6) {
+    c.b_experiment = 0.32;
+    c.b_paper_sph = 0.317;
+  } else if (std::abs(c.flow_rate - 0.03045) < 1e-6) {
+    c.b_experiment = 0.68;
+    c.b_paper_sph = 0.697;
+  }
+
+  io::SnapshotReader reader(run_dir + "/soil.h5");
+  const auto snapshots = reader.snapshots();
+  if (snapshots.empty()) throw std::runtime_error(run_dir + "/soil.h5 has no snapshot");
+  for (const auto& snap : snapshots) {
+    const auto s = read_soil(reader, snap.index);
+    c.times.push_back(snap.time);
+    c.b_history.push_back(rockfill_b(s, c.x_toe, c.x_crest, c.d15));
+    if (&snap == &snapshots.back()) {
+      c.time = snap.time;
+      c.particles = s.size();
+      for (int k = 0; k < 3; ++k) c.b[k] = rockfill_b(s, c.x_toe, c.x_crest, c.thresholds[k]);
+    }
+  }
+  const auto ts = read_timeseries(run_dir);
+  for (const auto& name : ts.names) {
+    if (name.rfind("level_x", 0) != 0) continue;
+    c.level_names.push_back(name);
+    c.levels.push_back(mean_from(ts, name, 0.9 * c.time));
+  }
+  return c;
+}
+
+HeaveCheck check_heave(const std::string& run_dir) {
+  const auto run = read_run_json(run_dir);
+  const auto& p = run.at("parameters");
+  HeaveCheck c;
+  const auto& soil = p.at("soil");
+  c.damping_end = soil.at("damping_duration").get<double>();
+  bool found = false;
+  for (const auto& wall : p.at("walls")) {
+    if (wall.value("label", "") != "sheet_pile") continue;
+    c.pile_tip = wall.at("min").at(1).get<double>();
+    c.pile_face = wall.at("max").at(0).get<double>();
+    found = true;
+  }
+  if (!found) throw std::runtime_error(run_dir + "/run.json: no wall labelled 'sheet_pile'");
+  const int gravel = material_index(soil, "gravel");
+  const double band = 0.02;  // next to the pile: within 2 cm of its upstream face
+
+  io::SnapshotReader reader(run_dir + "/soil.h5");
+  const auto snapshots = reader.snapshots();
+  if (snapshots.empty()) throw std::runtime_error(run_dir + "/soil.h5 has no snapshot");
+  for (const auto& snap : snapshots) {
+    const auto s = read_soil(reader, snap.index);
+    const double bottom = lowest_in_band(s, gravel, c.pile_face, c.pile_face + band);
+    const double t = snap.time - c.damping_end;
+    if (c.times.empty()) c.gravel_top_of_sand = bottom;
+    c.times.push_back(t);
+    c.gravel_bottom.push_back(bottom);
+    if (c.failure_time < 0 && t >= 0 && bottom <= c.pile_tip) c.failure_time = t;
+    c.end_time = t;
+  }
+  const auto ts = read_timeseries(run_dir);
+  const auto& t = ts.column("t");
+  const auto& up = ts.column("upstream_level");
+  const auto& down = ts.column("downstream_level");
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    c.head_times.push_back(t[i] - c.damping_end);
+    c.head.push_back(up[i] - down[i]);
+  }
+  c.head_at_start = interpolate(c.head_times, c.head, 0.0);
+  if (c.failure_time >= 0) c.head_at_failure = interpolate(c.head_times, c.head, c.failure_time);
+  return c;
+}
+
+}  // namespace porosph::validation

@@ -1,0 +1,63 @@
+// Measurements of the seed paper's dam and excavation cases (issue 6): the B parameter of the
+// overtopped rockfill shell (section 4.2, Table 3) and the failure time of the hydraulic heave next
+// to a sheet pile (section 4.3, Table 4 and Fig. 8). Definitions: docs/validation.md.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace porosph::validation {
+
+/// Soil particles of one snapshot, 2D, row-major (x0, y0, x1, y1, ...).
+struct SoilParticles2D {
+  std::vector<double> position, displacement;
+  std::vector<std::uint8_t> fixed;
+  std::vector<std::int64_t> material;
+  std::size_t size() const { return fixed.size(); }
+};
+
+/// B parameter (paper 4.2): horizontal distance from the original toe x_toe to the most upstream
+/// initial position x0 = x - u of a free particle that moved more than `threshold` (|u|), among
+/// the particles that started on the slope (x0 >= x_crest, the downstream end of the crest; the
+/// column under the crest settles along the core and is not part of the slope). 0 when no slope
+/// particle moved that far.
+double rockfill_b(const SoilParticles2D& soil, double x_toe, double x_crest, double threshold);
+
+/// Lowest y of a free particle of `material` whose x lies in [x_lo, x_hi]; NaN if there is none.
+double lowest_in_band(const SoilParticles2D& soil, std::int64_t material, double x_lo, double x_hi);
+
+/// Rockfill run: B at the last snapshot for thresholds D15/2, D15, 2 D15 (the middle one is the
+/// reported value), B(t) at D15, and the steady water levels in the shell.
+struct RockfillCheck {
+  double time = 0, flow_rate = 0, dp = 0, d15 = 0, x_toe = 0, x_crest = 0;
+  /// Flume width W = inflow cross_section / sheet thickness (the zone's height), q = Q / W.
+  double flume_width = 0, discharge_per_metre = 0;
+  std::array<double, 3> thresholds{}, b{};
+  std::vector<double> times, b_history;  ///< B at threshold D15 at every snapshot
+  double b_experiment = -1;              ///< 0.32 m / 0.68 m for Q 19.36 / 30.45 l/s; < 0: none
+  double b_paper_sph = -1;               ///< 0.317 / 0.697
+  std::vector<std::string> level_names;  ///< observables level_x* of timeseries.csv
+  std::vector<double> levels;            ///< their mean over the last 10 % of the run [m]
+  std::size_t particles = 0;
+};
+
+RockfillCheck check_rockfill(const std::string& run_dir);
+
+/// Hydraulic heave run. Failure: the first snapshot at which the bottom of the gravel within
+/// 2 cm of the pile's upstream face has sunk to the pile tip, counted from the end of the damping
+/// stage. Head: upstream_level - downstream_level of timeseries.csv.
+struct HeaveCheck {
+  double damping_end = 0, pile_tip = 0, pile_face = 0, gravel_top_of_sand = 0;
+  std::vector<double> times;             ///< snapshot times [s] (from the end of the damping stage)
+  std::vector<double> gravel_bottom;     ///< lowest gravel particle next to the pile [m]
+  std::vector<double> head_times, head;  ///< overall head [m] vs time from the damping end
+  double failure_time = -1;  ///< [s] after the damping stage; < 0: no failure in the run
+  double head_at_start = 0, head_at_failure = 0;
+  double end_time = 0;
+};
+
+HeaveCheck check_heave(const std::string& run_dir);
+
+}  // namespace porosph::validation

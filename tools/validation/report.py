@@ -1,0 +1,209 @@
+#!/usr/bin/python3
+"""Validation report: runs (or reads) the seed paper's cases and the classic benchmarks, compares
+each with its reference through build/bin/porosph_validate, plots the time series against the
+reference and writes docs/validation.md with the figures in docs/validation/.
+
+  tools/validation/report.py                  # read finished runs in runs/validation/, write the report
+  tools/validation/report.py --run            # first run every case whose run is missing (hours)
+  tools/validation/report.py --run --only hydraulic_heave rockfill_q19
+  tools/validation/report.py --list           # the cases, their scenes and overrides
+
+Needs python3-numpy, python3-h5py and python3-matplotlib (Debian packages; scripts/report.sh
+installs them). The case list (scene, overrides, validate command) is CASES below; the physics
+of each check is in tools/validation/*.h and docs/validation-studies.md.
+"""
+import argparse
+import csv
+import json
+import os
+import subprocess
+import sys
+
+import case_plots
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def case(name, title, scene, check, overrides=(), extra=(), plot=None, notes=""):
+    return dict(name=name, title=title, scene=scene, check=check, overrides=list(overrides),
+                extra=list(extra), plot=plot, notes=notes)
+
+
+HEAVE_GRID = [(26, 40), (29, 35), (29, 40), (29, 45), (32, 40)]
+
+CASES = [
+    case("dam_break", "Dam break against Martin & Moyce (1952), n^2 = 2",
+         "cases/dam_break/scene.toml", "dam_break", plot=case_plots.dam_break,
+         notes="Front Z = z/a against T = t sqrt(2g/a); resolution series in "
+               "docs/validation-studies.md."),
+    case("hydrostatic_tank", "Still water tank, 2 s", "cases/hydrostatic_tank/scene.toml",
+         "hydrostatic_tank", plot=case_plots.hydrostatic_tank),
+    case("soil_column", "Dry soil column at rest", "cases/soil_column/scene.toml", "soil_column",
+         plot=case_plots.soil_column),
+    case("granular_collapse", "Granular column collapse (Bui et al. 2008)",
+         "cases/granular_collapse/scene.toml", "granular_collapse",
+         plot=case_plots.granular_collapse,
+         notes="The experiment's profile is not available here: the run-out is reported without "
+               "an error."),
+    case("darcy_column", "Darcy column (Kozeny-Carman)", "cases/darcy_column/scene.toml",
+         "darcy_column", plot=case_plots.darcy_column),
+    case("darcy_column_forchheimer", "Forchheimer column (Den Adel)",
+         "cases/darcy_column/scene_forchheimer.toml", "darcy_column",
+         plot=case_plots.darcy_column),
+    case("fluidized_bed", "Fluidised bed (paper 4.1), quick variant",
+         "cases/fluidized_bed/scene.toml", "fluidized_bed",
+         overrides=["run.dp=0.002", "run.end_time=4.0", "water.inflow[0].ramp_time=1.0",
+                    "soil.materials[2].young_modulus=2.0e5"],
+         extra=["--window", "0.5"], plot=case_plots.fluidized_bed,
+         notes="dp 2 mm, E softened 25x and the ramp shortened to 1 s (docs/coupling.md says why "
+               "the equilibrium does not depend on either); the paper-resolution runs are in "
+               "docs/validation-studies.md."),
+    case("rockfill_q19", "Rockfill core overtopping (paper 4.2), Q = 19.36 l/s",
+         "cases/rockfill_overtopping/scene.toml", "rockfill_overtopping",
+         overrides=["run.dp=0.02"], plot=case_plots.rockfill,
+         notes="dp 0.02 m (half the CASES.md resolution), flume width W = 2.5 m (assumed)."),
+    case("rockfill_q30", "Rockfill core overtopping (paper 4.2), Q = 30.45 l/s",
+         "cases/rockfill_overtopping/scene.toml", "rockfill_overtopping",
+         overrides=["run.dp=0.02", "water.inflow[0].flow_rate=0.03045"],
+         plot=case_plots.rockfill,
+         notes="dp 0.02 m, W = 2.5 m (assumed)."),
+    case("hydraulic_heave", "Hydraulic heave next to a sheet pile (paper 4.3), phi 29 / 40",
+         "cases/hydraulic_heave/scene.toml", "hydraulic_heave", overrides=["run.dp=0.005"],
+         plot=case_plots.hydraulic_heave,
+         notes="dp 5 mm (twice the paper's spacing)."),
+] + [
+    case(f"heave_s{s}_g{g}", f"Hydraulic heave, phi sand {s} / gravel {g} (Fig. 8 grid)",
+         "cases/hydraulic_heave/scene.toml", "hydraulic_heave",
+         overrides=["run.dp=0.005", f"soil.materials[0].friction_angle={s}",
+                    f"soil.materials[1].friction_angle={g}"])
+    for (s, g) in HEAVE_GRID if (s, g) != (29, 40)
+]
+
+
+def run_case(c, args):
+    out = os.path.join(args.runs, c["name"])
+    command = [os.path.join(args.bin, "coupler"), "run", os.path.join(ROOT, c["scene"]),
+               "--out", out]
+    for o in c["overrides"]:
+        command += ["--set", o]
+    print("running:", " ".join(command), flush=True)
+    subprocess.run(command, check=False, stdout=subprocess.DEVNULL)
+
+
+def validate(c, args):
+    out = os.path.join(args.runs, c["name"])
+    series = os.path.join(out, "validate_series.csv")
+    command = [os.path.join(args.bin, "porosph_validate"), c["check"], out] + c["extra"]
+    if c["check"] in ("rockfill_overtopping", "hydraulic_heave"):
+        command += ["--series", series]
+    result = subprocess.run(command, capture_output=True, text=True)
+    text = result.stdout + result.stderr
+    summaries = [line.split("\t")[1:] for line in result.stdout.splitlines()
+                 if line.startswith("summary\t")]
+    return text, summaries
+
+
+def run_facts(out):
+    with open(os.path.join(out, "run.json")) as f:
+        run = json.load(f)
+    particles = {p: v["particles"]["total"] for p, v in run["phases"].items()}
+    return dict(particles=particles, steps=run["steps"], wall=run["wall_seconds"]["total"],
+                status=run["status"], time=run["simulated_time"])
+
+
+def command_line(c):
+    sets = "".join(f" --set '{o}'" for o in c["overrides"])
+    return (f"build/bin/coupler run {c['scene']}{sets} --out runs/validation/{c['name']}\n"
+            f"build/bin/porosph_validate {c['check']} runs/validation/{c['name']}"
+            + "".join(" " + e for e in c["extra"]))
+
+
+def heave_grid_section(args):
+    rows = []
+    for (s, g) in HEAVE_GRID:
+        name = "hydraulic_heave" if (s, g) == (29, 40) else f"heave_s{s}_g{g}"
+        out = os.path.join(args.runs, name)
+        if not os.path.exists(os.path.join(out, "run.json")):
+            continue
+        _, summaries = validate(dict(check="hydraulic_heave", extra=[], name=name), args)
+        value = summaries[0][1] if summaries else "?"
+        rows.append((s, g, value))
+    if not rows:
+        return ""
+    text = ["## Failure time against the friction angles (the paper's Fig. 8 idea)", "",
+            "| phi sand | phi gravel | time of complete failure (experiment 4.4 s) |",
+            "| --- | --- | --- |"]
+    text += [f"| {s} | {g} | {v} |" for (s, g, v) in rows]
+    figure = case_plots.heave_grid(rows, args.figures)
+    if figure:
+        text += ["", f"![failure time vs friction angles]({os.path.relpath(figure, args.docs)})"]
+    return "\n".join(text) + "\n"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--runs", default=os.path.join(ROOT, "runs", "validation"))
+    parser.add_argument("--bin", default=os.path.join(ROOT, "build", "bin"))
+    parser.add_argument("--out", default=os.path.join(ROOT, "docs", "validation.md"))
+    parser.add_argument("--run", action="store_true", help="run the cases whose run is missing")
+    parser.add_argument("--only", nargs="*", help="case names (default: all)")
+    parser.add_argument("--list", action="store_true")
+    args = parser.parse_args()
+    args.docs = os.path.dirname(args.out)
+    args.figures = os.path.join(args.docs, "validation")
+    os.makedirs(args.figures, exist_ok=True)
+    cases = [c for c in CASES if not args.only or c["name"] in args.only]
+    if args.list:
+        for c in cases:
+            print(f"{c['name']:28s} {c['scene']} {' '.join(c['overrides'])}")
+        return 0
+    if args.run:
+        for c in cases:
+            if not os.path.exists(os.path.join(args.runs, c["name"], "run.json")):
+                run_case(c, args)
+
+    table = ["| case | quantity | PoroSPH | reference | error | target | verdict | particles "
+             "(per phase, walls included) | steps | wall time |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    sections = []
+    for c in CASES:
+        out = os.path.join(args.runs, c["name"])
+        if not os.path.exists(os.path.join(out, "run.json")):
+            table.append(f"| {c['name']} | not run | | | | | | | | |")
+            continue
+        text, summaries = validate(c, args)
+        facts = run_facts(out)
+        particles = ", ".join(f"{p} {n:,}" for p, n in facts["particles"].items())
+        for cells in summaries:
+            quantity, value, reference, error, target, verdict = (x.replace("|", "\\|")
+                                                                  for x in cells)
+            table.append(f"| {c['name']} | {quantity} | {value} | {reference} | {error} | "
+                         f"{target} | {verdict} | {particles} | {facts['steps']:,} | "
+                         f"{facts['wall']:.0f} s |")
+        if c["name"].startswith("heave_s"):
+            continue  # the grid's runs appear in the Fig. 8 table only
+        figures = c["plot"](out, args.figures, c["name"]) if c["plot"] else []
+        body = [f"## {c['name']}: {c['title']}", "", c["notes"], "", "```", command_line(c),
+                "```", "", f"Run: {facts['status']} to t = {facts['time']:.3f} s, "
+                f"{facts['steps']:,} steps, {facts['wall']:.0f} s wall time; {particles}.", "",
+                "```", text.strip(), "```", ""]
+        body += [f"![{c['name']}]({os.path.relpath(f, args.docs)})" for f in figures]
+        sections.append("\n".join(body) + "\n")
+
+    header = ["# Validation report", "",
+              "<!-- Generated by tools/validation/report.py; do not edit by hand. -->", "",
+              "Every figure below comes from the run and the command printed with it; "
+              "`tools/validation/report.py --run` reruns what is missing and rewrites this file "
+              "(long runs, not in CI). Resolution studies, variants and the discussion of each "
+              "result: docs/validation-studies.md.", "",
+              "Machine: 2-core shared VM, Debian 12, g++ 12 Release build (docs/performance.md).",
+              ""]
+    with open(args.out, "w") as f:
+        f.write("\n".join(header + table) + "\n\n" + heave_grid_section(args) + "\n"
+                + "\n".join(sections))
+    print("wrote", args.out)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
