@@ -5,6 +5,7 @@
 
 #include "tests/support/process_support.h"
 #include "tools/validation/case_checks.h"
+#include "tools/validation/dam_case_checks.h"
 #include "tools/validation/run_directory.h"
 
 namespace porosph::testing {
@@ -39,6 +40,31 @@ TEST(Validation, DamBreakErrorOfAKnownFront) {
   EXPECT_NEAR(c.Z_simulated[0], 1.5, 1e-4);
   EXPECT_NEAR(c.mean_abs_error, 0.15, 1e-4);
   EXPECT_NEAR(c.max_abs_error, 0.2, 1e-4);
+}
+
+// B of the rockfill shell: toe at x = 1.7, crest end at 0.2. Particles: one that moved 30 mm from
+// x0 = 1.3 (counts at the 26 mm threshold, not at 52 mm), one that moved 60 mm from x0 = 1.5,
+// one under the crest (x0 = 0.1) that moved 100 mm (not part of the slope), one fixed that
+// "moved" 1 m, one at rest at x0 = 0.5.
+TEST(Validation, RockfillBIsMeasuredFromTheToeToTheMostUpstreamMovedSlopeParticle) {
+  validation::SoilParticles2D s;
+  auto add = [&](double x0, double y0, double ux, double uy, bool fixed) {
+    s.position.insert(s.position.end(), {x0 + ux, y0 + uy});
+    s.displacement.insert(s.displacement.end(), {ux, uy});
+    s.fixed.push_back(fixed);
+    s.material.push_back(0);
+  };
+  add(1.3, 0.2, 0.018, -0.024, false);  // |u| = 0.030
+  add(1.5, 0.1, 0.06, 0.0, false);
+  add(0.1, 0.8, 0.0, -0.1, false);
+  add(0.9, 0.3, 1.0, 0.0, true);
+  add(0.5, 0.5, 0.0, 0.0, false);
+  EXPECT_NEAR(validation::rockfill_b(s, 1.7, 0.2, 0.026), 0.4, 1e-12);
+  EXPECT_NEAR(validation::rockfill_b(s, 1.7, 0.2, 0.052), 0.2, 1e-12);
+  EXPECT_EQ(validation::rockfill_b(s, 1.7, 0.2, 0.2), 0.0);
+  // Lowest free particle of material 0 with 0.4 <= x <= 1.4: the one now at (1.318, 0.176).
+  EXPECT_NEAR(validation::lowest_in_band(s, 0, 0.4, 1.4), 0.176, 1e-12);
+  EXPECT_TRUE(std::isnan(validation::lowest_in_band(s, 1, 0.0, 3.0)));
 }
 
 TEST(Validation, MissingRunDirectoryIsAClearError) {

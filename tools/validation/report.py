@@ -52,8 +52,8 @@ CASES = [
          plot=case_plots.darcy_column),
     case("fluidized_bed", "Fluidised bed (paper 4.1), quick variant",
          "cases/fluidized_bed/scene.toml", "fluidized_bed",
-         overrides=["run.dp=0.002", "run.end_time=4.0", "water.inflow[0].ramp_time=1.0",
-                    "soil.materials[2].young_modulus=2.0e5"],
+         overrides=["run.dp=0.002", "run.end_time=4.0", "water.inflow[0].ramp_time=1.0"]
+         + [f"soil.materials[{m}].young_modulus=2.0e5" for m in range(3)],
          extra=["--window", "0.5"], plot=case_plots.fluidized_bed,
          notes="dp 2 mm, E softened 25x and the ramp shortened to 1 s (docs/coupling.md says why "
                "the equilibrium does not depend on either); the paper-resolution runs are in "
