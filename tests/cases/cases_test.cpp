@@ -76,7 +76,7 @@ TEST(Cases, HydrostaticTankShortened) {
 // Measured at this coarse spacing (OpenMP order makes runs differ): row-mean pressure 0.9-2.3%
 // off rho g (H - z), per-particle error 2.4-3.9% (third row from the surface, inside the
 // kernel support of the free surface), max speed ~1.1% of sqrt(g H). The 2% / 1% targets
-// are met at dp = 0.01 for the profile, not per particle (docs/validation.md). The bounds below
+// are met at dp = 0.01 for the profile, not per particle (docs/validation-studies.md). The bounds below
 // keep ~2x margin over those measurements and fail on any real regression of walls, initial
 // density, EOS.
 TEST(Cases, HydrostaticTankStaysHydrostaticForTwoSeconds) {

@@ -72,7 +72,7 @@ TEST(SoilCases, SoilColumnShortened) {
 
 // The whole soil_column at its default dp = 0.01 m (20 x 100 particles, ~16,000 steps, ~20 s):
 // settled vertical stress against the weight of the soil above. Measured: per particle within
-// 2.7 %, row means within 2.1 % (docs/validation.md). Bounds: the 3 % on the row means, and
+// 2.7 %, row means within 2.1 % (docs/validation-studies.md). Bounds: the 3 % on the row means, and
 // 3.5 % per particle (a 1.3x margin for the run-to-run variation of the OpenMP summation order).
 // sigma_h / sigma_v must lie between the elastic K0 = nu / (1 - nu) = 0.43 and 0.55: the elastic
 // oedometric state lies just outside the plane-strain Drucker-Prager cone for phi = 30 (which

@@ -1,6 +1,6 @@
 // Measurements of the seed paper's dam and excavation cases (issue 6): the B parameter of the
 // overtopped rockfill shell (section 4.2, Table 3) and the failure time of the hydraulic heave next
-// to a sheet pile (section 4.3, Table 4 and Fig. 8). Definitions: docs/validation.md.
+// to a sheet pile (section 4.3, Table 4 and Fig. 8). Definitions: docs/validation-studies.md.
 #pragma once
 
 #include <array>

@@ -6,7 +6,7 @@
 namespace porosph::validation {
 
 /// Reads the observables sand_porosity, bed_height and sand_stress_yy of timeseries.csv and the
-/// inflow ramp of run.json. Definitions (docs/validation.md):
+/// inflow ramp of run.json. Definitions (docs/validation-studies.md):
 /// - steady porosity: mean of sand_porosity over the last `steady_window` seconds of the run;
 ///   its drift is the change of the window's second half mean against its first half mean.
 /// - onset of fluidisation (incipient fluidisation: the drag carries the submerged weight): the

@@ -9,7 +9,7 @@ reference and writes docs/validation.md with the figures in docs/validation/.
   tools/validation/report.py --list           # the cases, their scenes and overrides
 
 Needs python3-numpy, python3-h5py and python3-matplotlib (Debian packages; scripts/report.sh
-installs them). The case list (scene, overrides, validate command) is CASES below; the physics
+installs them and runs this script). The case list (scene, overrides, validate command) is CASES below; the physics
 of each check is in tools/validation/*.h and docs/validation-studies.md.
 """
 import argparse
@@ -74,7 +74,7 @@ CASES = [
 ] + [
     case(f"heave_s{s}_g{g}", f"Hydraulic heave, phi sand {s} / gravel {g} (Fig. 8 grid)",
          "cases/hydraulic_heave/scene.toml", "hydraulic_heave",
-         overrides=["run.dp=0.005", f"soil.materials[0].friction_angle={s}",
+         overrides=["run.dp=0.005", "run.end_time=5.2", f"soil.materials[0].friction_angle={s}",
                     f"soil.materials[1].friction_angle={g}"])
     for (s, g) in HEAVE_GRID if (s, g) != (29, 40)
 ]
