@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "coupler/interaction/overlap_region.h"
+#include "scene/timeseries_columns.h"
 
 namespace porosph::coupler {
 
@@ -21,8 +22,6 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
-
-const char* axis_name(int k) { return k == 0 ? "x" : k == 1 ? "y" : "z"; }
 
 /// After a signal, the longest the coupler waits for the solvers to reach the checkpoint.
 constexpr double kSignalGraceSeconds = 30.0;
@@ -63,26 +62,8 @@ CoupledStepLoop::CoupledStepLoop(const scene::Scene& scene, SolverHub& hub, RunR
 }
 
 std::vector<std::string> CoupledStepLoop::timeseries_columns() const {
-  std::vector<std::string> columns = {"t", "dt"};
-  for (const std::string& phase : phases_) {
-    columns.push_back(phase + "_kinetic_energy");
-    for (int k = 0; k < scene_.run.dimension; ++k) {
-      columns.push_back(phase + "_momentum_" + axis_name(k));
-    }
-    columns.push_back(phase + "_mass");
-    columns.push_back(phase + "_particles");
-    columns.push_back(phase + "_removed");
-    columns.push_back(phase + "_overlap");
-  }
-  if (scene_.has_water() && scene_.has_soil()) {
-    // Cumulative interaction impulses [N s] up to t, and the soil-water pairs at t.
-    for (const char* phase : {"soil", "water"}) {
-      for (int k = 0; k < scene_.run.dimension; ++k) {
-        columns.push_back(std::string("impulse_to_") + phase + "_" + axis_name(k));
-      }
-    }
-    columns.push_back("soil_water_pairs");
-  }
+  std::vector<std::string> columns = scene::builtin_timeseries_columns(
+      phases_, scene_.run.dimension, scene_.has_water() && scene_.has_soil());
   for (const auto& observable : scene_.observables) columns.push_back(observable.name);
   return columns;
 }

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "scene/scene_internal.h"
+#include "scene/timeseries_columns.h"
 
 namespace porosph::scene {
 namespace {
@@ -69,6 +70,7 @@ void check_observables(const toml::table& root, int dimension, const ShapeChecke
   const toml::array* observables = root.get_as<toml::array>("observables");
   if (!observables) return;
   std::map<std::string, std::size_t> first_index;
+  const auto builtin = builtin_timeseries_columns({"water", "soil"}, dimension, true);
   for (std::size_t i = 0; i < observables->size(); ++i) {
     const toml::table& observable = *observables->get(i)->as_table();
     const std::string key = "observables[" + std::to_string(i) + "]";
@@ -77,6 +79,10 @@ void check_observables(const toml::table& root, int dimension, const ShapeChecke
       errors.fail(observable.get("name"), key + ".name",
                   "duplicate observable name '" + name + "' (also observables[" +
                       std::to_string(it->second) + "])");
+    if (std::find(builtin.begin(), builtin.end(), name) != builtin.end())
+      errors.fail(observable.get("name"), key + ".name",
+                  "observable name '" + name +
+                      "' is a built-in column of timeseries.csv; choose another name");
     const std::string phase = text_of(observable, "phase");
     if (!has_phase(root, phase))
       errors.fail(observable.get("phase"), key + ".phase", phase_missing(phase));

@@ -96,6 +96,11 @@ std::vector<ErrorCase> error_cases() {
        c + "\n[[observables]]\nname = \"height\"\nkind = \"max_speed\"\n", "observables[1].name",
        "name = \"height\"\nkind = \"max_speed\"",
        "duplicate observable name 'height' (also observables[0])"},
+      {"observable shadows a built-in column",
+       c + "\n[[observables]]\nname = \"water_particles\"\nkind = \"particle_count\"\n",
+       "observables[1].name", "name = \"water_particles\"",
+       "observable name 'water_particles' is a built-in column of timeseries.csv; choose another "
+       "name"},
       {"zero direction", with(c, "[0.0, 2.0]", "[0.0, 0.0]"), "observables[0].direction",
        "direction", "must not be the zero vector"},
       {"direction missing",
