@@ -12,6 +12,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -86,8 +87,9 @@ class RunSession {
   std::string out_dir_;
   std::unique_ptr<SolverHub> hub_;
   std::map<std::string, std::unique_ptr<SolverProcess>> processes_;
-  std::optional<LoopState> resumed_;  ///< set when resuming
-  double wall_seconds_before_ = 0;    ///< wall time of the run before the resume
+  std::optional<LoopState> resumed_;         ///< set when resuming
+  double wall_seconds_before_ = 0;           ///< wall time of the run before the resume
+  std::set<std::string> phases_without_h5_;  ///< phases whose solver wrote no snapshot file
 };
 
 void RunSession::prepare_output_dir() {
@@ -184,8 +186,11 @@ void RunSession::start_solvers() {
     return;
   }
   for (const std::string& phase : scene_.phases()) {
+    // The command line (--fluid-solver / --soil-solver) wins over the scene (water.solver /
+    // soil.solver); neither names one: the built-in solver next to the coupler.
     std::string requested = phase == "water" ? options_.fluid_solver : options_.soil_solver;
-    if (requested.empty() && phase == "water") requested = scene_.water->solver;
+    if (requested.empty())
+      requested = phase == "water" ? scene_.water->solver : scene_.soil->solver;
     const bool user_named = !requested.empty();
     if (!user_named) requested = phase == "water" ? "fluid_solver" : "soil_solver";
     // A solver command may carry its own arguments: "my_solver --model x" (split at spaces).
@@ -313,6 +318,15 @@ void RunSession::write_outputs() {
   std::vector<io::XdmfPhaseSeries> series;
   for (const auto& [phase, phase_record] : record_.phases) {
     if (phase_record.snapshots.empty()) continue;
+    // A solver need not write snapshots (docs/solver-protocol.md): run.xdmf then leaves its phase
+    // out rather than point ParaView at a missing file.
+    if (!fs::exists(fs::path(out_dir_) / phase_record.h5_file)) {
+      if (phases_without_h5_.insert(phase).second) {
+        std::fprintf(stderr, "coupler: the %s solver wrote no %s; run.xdmf leaves that phase out\n",
+                     phase.c_str(), phase_record.h5_file.c_str());
+      }
+      continue;
+    }
     series.push_back({phase, phase_record.h5_file, record_.dimension,
                       snapshot_fields_of_phase(phase, record_.dimension), phase_record.snapshots});
   }

@@ -5,7 +5,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libzmq3-dev cppzmq-dev libhdf5-dev protobuf-compiler libprotobuf-dev
   googletest libgtest-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
-  python3 python3-numpy python3-h5py python3-matplotlib
+  python3 python3-numpy python3-h5py python3-matplotlib python3-zmq python3-protobuf
 )
 missing=()
 for p in "${packages[@]}"; do
