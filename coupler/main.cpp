@@ -1,9 +1,11 @@
 // coupler: the PoroSPH command line (DESIGN.md section 6).
-//   coupler run SCENE.toml [--out DIR] [--set key=value ...] [--fluid-solver EXE] [--soil-solver
-//   EXE] coupler run --attach --endpoint tcp://HOST:PORT SCENE.toml coupler run --resume DIR
-//   continue DIR's run from its latest checkpoint coupler check SCENE.toml [--set ...]     validate
-//   only, print the resolved scene coupler schema --markdown                the scene key reference
-//   (docs/scene.md)
+// clang-format off
+//   coupler run SCENE.toml [--out DIR] [--set key=value ...] [--fluid-solver EXE] [--soil-solver EXE]
+//   coupler run --attach --endpoint tcp://HOST:PORT SCENE.toml
+//   coupler run --resume DIR          continue DIR's run from its latest checkpoint
+//   coupler check SCENE.toml [--set ...]     validate only, print the resolved scene
+//   coupler schema --markdown                the scene key reference (docs/scene.md)
+// clang-format on
 // Exit codes: 0 completed, 1 the run failed, 2 bad input.
 #include <CLI/CLI.hpp>
 #include <cstdio>

@@ -181,8 +181,10 @@ void RunSession::start_solvers() {
   hub_ = std::make_unique<SolverHub>(endpoint);
   const std::string connect = hub_->connect_endpoint();
   if (options_.attach) {
-    std::fprintf(stderr, "coupler: waiting for solvers (%s) at %s\n",
-                 scene_.has_water() ? "water" : "", connect.c_str());
+    std::string phases;
+    for (const std::string& phase : scene_.phases()) phases += (phases.empty() ? "" : ", ") + phase;
+    std::fprintf(stderr, "coupler: waiting for solvers (%s) at %s\n", phases.c_str(),
+                 connect.c_str());
     return;
   }
   for (const std::string& phase : scene_.phases()) {
