@@ -62,6 +62,11 @@ TEST(Validation, RockfillBIsMeasuredFromTheToeToTheMostUpstreamMovedSlopeParticl
   EXPECT_NEAR(validation::rockfill_b(s, 1.7, 0.2, 0.026), 0.4, 1e-12);
   EXPECT_NEAR(validation::rockfill_b(s, 1.7, 0.2, 0.052), 0.2, 1e-12);
   EXPECT_EQ(validation::rockfill_b(s, 1.7, 0.2, 0.2), 0.0);
+  // Wet particles only: the one from x0 = 1.3 is dry (saturation 0.05 < 0.1), so B comes from
+  // x0 = 1.5; without the saturation field the wet variant is an error, not a silent 0.
+  EXPECT_THROW(validation::rockfill_b(s, 1.7, 0.2, 0.026, 0.1), std::runtime_error);
+  s.saturation = {0.05, 0.9, 0.9, 0.9, 0.9};
+  EXPECT_NEAR(validation::rockfill_b(s, 1.7, 0.2, 0.026, 0.1), 0.2, 1e-12);
   // Lowest free particle of material 0 with 0.4 <= x <= 1.4: the one now at (1.318, 0.176).
   EXPECT_NEAR(validation::lowest_in_band(s, 0, 0.4, 1.4), 0.176, 1e-12);
   EXPECT_TRUE(std::isnan(validation::lowest_in_band(s, 1, 0.0, 3.0)));

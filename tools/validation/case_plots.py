@@ -142,7 +142,8 @@ def rockfill(out, figures, name):
     if os.path.exists(series):
         s = read_csv(series)
         fig, ax = plt.subplots(figsize=(5, 3.5))
-        ax.plot(s["t"], s["B"], label="PoroSPH (moved > D15)")
+        ax.plot(s["t"], s["B_wet"], label="PoroSPH, wet particles moved > D15")
+        ax.plot(s["t"], s["B_all"], ":", label="PoroSPH, all slope particles")
         if b_exp:
             ax.axhline(b_exp, color="k", ls="--", label=f"experiment {b_exp} m")
         ax.set_xlabel("t [s]")

@@ -21,6 +21,9 @@ SoilParticles2D read_soil(const io::SnapshotReader& reader, std::uint32_t index)
   s.displacement = reader.read_f64(index, "displacement").values;
   s.fixed = reader.read_u8(index, "fixed").values;
   s.material = reader.read_i64(index, "material").values;
+  const auto fields = reader.fields(index);
+  if (std::find(fields.begin(), fields.end(), "saturation") != fields.end())
+    s.saturation = reader.read_f64(index, "saturation").values;
   return s;
 }
 
@@ -48,10 +51,14 @@ int material_index(const nlohmann::json& soil, const std::string& name) {
 
 }  // namespace
 
-double rockfill_b(const SoilParticles2D& soil, double x_toe, double x_crest, double threshold) {
+double rockfill_b(const SoilParticles2D& soil, double x_toe, double x_crest, double threshold,
+                  double wet_saturation) {
+  if (wet_saturation > 0 && soil.saturation.size() != soil.size())
+    throw std::runtime_error("rockfill B of the wet particles needs the saturation field");
   double x_most_upstream = x_toe;
   for (std::size_t i = 0; i < soil.size(); ++i) {
     if (soil.fixed[i]) continue;
+    if (wet_saturation > 0 && soil.saturation[i] < wet_saturation) continue;
     const double ux = soil.displacement[2 * i], uy = soil.displacement[2 * i + 1];
     const double x0 = soil.position[2 * i] - ux;
     if (x0 < x_crest || std::hypot(ux, uy) <= threshold) continue;
@@ -95,6 +102,7 @@ RockfillCheck check_rockfill(const std::string& run_dir) {
     if (v.at(1).get<double>() == y_top) c.x_crest = std::max(c.x_crest, v.at(0).get<double>());
   }
   c.thresholds = {0.5 * c.d15, c.d15, 2 * c.d15};
+  if (p.contains("coupling")) c.wet_saturation = p.at("coupling").value("wet_saturation", 0.1);
   if (std::abs(c.flow_rate - 0.01936) < 1e-6) {
     c.b_experiment = 0.32;
     c.b_paper_sph = 0.317;
@@ -110,10 +118,14 @@ RockfillCheck check_rockfill(const std::string& run_dir) {
     const auto s = read_soil(reader, snap.index);
     c.times.push_back(snap.time);
     c.b_history.push_back(rockfill_b(s, c.x_toe, c.x_crest, c.d15));
+    c.b_wet_history.push_back(rockfill_b(s, c.x_toe, c.x_crest, c.d15, c.wet_saturation));
     if (&snap == &snapshots.back()) {
       c.time = snap.time;
       c.particles = s.size();
-      for (int k = 0; k < 3; ++k) c.b[k] = rockfill_b(s, c.x_toe, c.x_crest, c.thresholds[k]);
+      for (int k = 0; k < 3; ++k) {
+        c.b[k] = rockfill_b(s, c.x_toe, c.x_crest, c.thresholds[k]);
+        c.b_wet[k] = rockfill_b(s, c.x_toe, c.x_crest, c.thresholds[k], c.wet_saturation);
+      }
     }
   }
   const auto ts = read_timeseries(run_dir);

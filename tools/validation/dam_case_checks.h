@@ -15,27 +15,33 @@ struct SoilParticles2D {
   std::vector<double> position, displacement;
   std::vector<std::uint8_t> fixed;
   std::vector<std::int64_t> material;
+  std::vector<double> saturation;  ///< water volume fraction (soil.h5 field); may be empty
   std::size_t size() const { return fixed.size(); }
 };
 
 /// B parameter (paper 4.2): horizontal distance from the original toe x_toe to the most upstream
 /// initial position x0 = x - u of a free particle that moved more than `threshold` (|u|), among
 /// the particles that started on the slope (x0 >= x_crest, the downstream end of the crest; the
-/// column under the crest settles along the core and is not part of the slope). 0 when no slope
-/// particle moved that far.
-double rockfill_b(const SoilParticles2D& soil, double x_toe, double x_crest, double threshold);
+/// column under the crest settles along the core and is not part of the slope). With
+/// wet_saturation > 0 only particles whose saturation is at least that count (movement where the
+/// water is). 0 when no slope particle moved that far.
+double rockfill_b(const SoilParticles2D& soil, double x_toe, double x_crest, double threshold,
+                  double wet_saturation = -1);
 
 /// Lowest y of a free particle of `material` whose x lies in [x_lo, x_hi]; NaN if there is none.
 double lowest_in_band(const SoilParticles2D& soil, std::int64_t material, double x_lo, double x_hi);
 
-/// Rockfill run: B at the last snapshot for thresholds D15/2, D15, 2 D15 (the middle one is the
-/// reported value), B(t) at D15, and the steady water levels in the shell.
+/// Rockfill run: B at the last snapshot for thresholds D15/2, D15, 2 D15, over every slope
+/// particle and over the wet ones (saturation >= coupling.wet_saturation); the reported value is
+/// the wet one at D15: the dry shell's surface creeps (SPH surface particles), the paper's B is
+/// the movement the seepage causes. B(t) of both at D15, and the steady water levels.
 struct RockfillCheck {
   double time = 0, flow_rate = 0, dp = 0, d15 = 0, x_toe = 0, x_crest = 0;
   /// Flume width W = inflow cross_section / sheet thickness (the zone's height), q = Q / W.
   double flume_width = 0, discharge_per_metre = 0;
-  std::array<double, 3> thresholds{}, b{};
-  std::vector<double> times, b_history;  ///< B at threshold D15 at every snapshot
+  double wet_saturation = 0.1;
+  std::array<double, 3> thresholds{}, b{}, b_wet{};
+  std::vector<double> times, b_history, b_wet_history;  ///< at threshold D15, every snapshot
   double b_experiment = -1;              ///< 0.32 m / 0.68 m for Q 19.36 / 30.45 l/s; < 0: none
   double b_paper_sph = -1;               ///< 0.317 / 0.697
   std::vector<std::string> level_names;  ///< observables level_x* of timeseries.csv

@@ -138,29 +138,30 @@ int report_rockfill(const porosph::validation::RockfillCheck& c, const std::stri
       " = cross_section / sheet), %zu soil particles, dp %.3f m, toe x = %.3f m\n",
       c.time, 1e3 * c.flow_rate, c.discharge_per_metre, c.flume_width, c.particles, c.dp, c.x_toe);
   for (int k = 0; k < 3; ++k) {
-    std::printf("B (moved > %.1f mm = %.1f D15) = %.3f m\n", 1e3 * c.thresholds[k],
-                c.thresholds[k] / c.d15, c.b[k]);
+    std::printf("B (moved > %.1f mm = %.1f D15): wet particles %.3f m, all particles %.3f m\n",
+                1e3 * c.thresholds[k], c.thresholds[k] / c.d15, c.b_wet[k], c.b[k]);
   }
-  const double b = c.b[1];
+  const double b = c.b_wet[1];
   const std::size_t n = c.times.size();
   if (n > 10) {
     std::printf(
-        "B at D15 over the run: %.3f m at t = %.1f s, %.3f m at t = %.1f s, %.3f at the end\n",
-        c.b_history[n / 2], c.times[n / 2], c.b_history[(9 * n) / 10], c.times[(9 * n) / 10], b);
+        "B (wet, D15) over the run: %.3f m at t = %.1f s, %.3f m at t = %.1f s, %.3f at the end\n",
+        c.b_wet_history[n / 2], c.times[n / 2], c.b_wet_history[(9 * n) / 10],
+        c.times[(9 * n) / 10], b);
   }
   for (std::size_t k = 0; k < c.levels.size(); ++k) {
     std::printf("steady water level %s: %.3f m\n", c.level_names[k].c_str(), c.levels[k]);
   }
-  write_series(series, {"t", "B"}, {&c.times, &c.b_history});
+  write_series(series, {"t", "B_wet", "B_all"}, {&c.times, &c.b_wet_history, &c.b_history});
   if (c.b_experiment < 0) {
     std::printf("no experiment for this flow rate\n");
-    print_summary("B parameter", fmt("%.3f m", b), "none for this Q", "-", "-", -1);
+    print_summary("B parameter (wet, D15)", fmt("%.3f m", b), "none for this Q", "-", "-", -1);
     return 0;
   }
   const double error = (b - c.b_experiment) / c.b_experiment;
   std::printf("B = %.3f m vs experiment %.2f m: error %+.1f%% (target 10%%; paper's SPH %.3f m)\n",
               b, c.b_experiment, 100 * error, c.b_paper_sph);
-  print_summary(fmt("B parameter, Q = %.2f l/s", 1e3 * c.flow_rate), fmt("%.3f m", b),
+  print_summary(fmt("B parameter (wet, D15), Q = %.2f l/s", 1e3 * c.flow_rate), fmt("%.3f m", b),
                 fmt("%.2f m (experiment)", c.b_experiment), fmt("%+.1f %%", 100 * error), "10 %",
                 std::abs(error) <= 0.10);
   return std::abs(error) <= 0.10 ? 0 : 1;
