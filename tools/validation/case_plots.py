@@ -181,6 +181,11 @@ def hydraulic_heave(out, figures, name):
         s = read_csv(series)
         axes[1].plot(s["t"], s["gravel_bottom"][0] - s["gravel_bottom"], label="PoroSPH")
         axes[1].axvline(4.4, color="k", ls="--", label="experiment: failure at 4.4 s")
+        tip = [w["min"][1] for w in run_json(out)["parameters"]["walls"]
+               if w.get("label") == "sheet_pile"]
+        if tip:
+            axes[1].axhline(s["gravel_bottom"][0] - tip[0], color="tab:red", ls=":",
+                            label="gravel at the pile tip (failure)")
         axes[1].set_xlabel("t after the damping stage [s]")
         axes[1].set_ylabel("advance of the gravel bottom at the pile [m]")
         axes[1].legend()
