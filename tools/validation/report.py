@@ -205,7 +205,10 @@ def main():
               "`tools/validation/report.py --run` reruns what is missing and rewrites this file "
               "(long runs, not in CI). Resolution studies, variants and the discussion of each "
               "result: docs/validation-studies.md.", "",
-              "Machine: 2-core shared VM, Debian 12, g++ 12 Release build (docs/performance.md).",
+              "Machine: 2-core shared VM, Debian 12, g++ 12 Release build (docs/performance.md). "
+              "The wall times are those of the runs below, most of them made while 3-5 runs "
+              "shared the two cores: they rank the cases, they are not throughput figures "
+              "(those are in docs/performance.md).",
               ""]
     with open(args.out, "w") as f:
         f.write("\n".join(header + table) + "\n\n" + heave_grid_section(args) + "\n"
