@@ -21,6 +21,7 @@
 #include "coupler/progress_line.h"
 #include "coupler/run_record.h"
 #include "coupler/solver_hub.h"
+#include "coupler/solver_launch.h"
 #include "coupler/solver_process.h"
 #include "proto/checkpoint_names.h"
 #include "scene/scene_loader.h"
@@ -72,8 +73,6 @@ class RunSession {
   /// The scene from the file and --set, and a fresh run directory.
   void load_fresh_run();
   void start_solvers();
-  std::vector<std::pair<std::string, std::string>> solver_environment(
-      const std::string& endpoint) const;
   void handshake();
   void check_interrupt() const;
   void check_solvers_alive();
@@ -159,23 +158,6 @@ void RunSession::load_resume_point() {
                static_cast<unsigned long long>(manifest->step));
 }
 
-std::vector<std::pair<std::string, std::string>> RunSession::solver_environment(
-    const std::string& endpoint) const {
-  std::vector<std::pair<std::string, std::string>> env = {{"POROSPH_ENDPOINT", endpoint}};
-  // Several solver processes share the cores: OpenMP threads that spin while their process waits
-  // for the coupler steal the other solver's core (measured: 30x slower). Unless the user chose,
-  // let idle threads sleep and split the cores between the solvers.
-  const auto solvers = static_cast<unsigned>(scene_.phases().size());
-  if (solvers > 1) {
-    if (!std::getenv("OMP_WAIT_POLICY")) env.emplace_back("OMP_WAIT_POLICY", "PASSIVE");
-    if (!std::getenv("OMP_NUM_THREADS")) {
-      const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-      env.emplace_back("OMP_NUM_THREADS", std::to_string(std::max(1u, cores / solvers)));
-    }
-  }
-  return env;
-}
-
 void RunSession::start_solvers() {
   const std::string endpoint = options_.endpoint.empty() ? fresh_ipc_endpoint() : options_.endpoint;
   hub_ = std::make_unique<SolverHub>(endpoint);
@@ -188,18 +170,16 @@ void RunSession::start_solvers() {
     return;
   }
   for (const std::string& phase : scene_.phases()) {
-    // The command line (--fluid-solver / --soil-solver) wins over the scene (water.solver /
-    // soil.solver); neither names one: the built-in solver next to the coupler.
-    std::string requested = phase == "water" ? options_.fluid_solver : options_.soil_solver;
-    if (requested.empty())
-      requested = phase == "water" ? scene_.water->solver : scene_.soil->solver;
-    const bool user_named = !requested.empty();
-    if (!user_named) requested = phase == "water" ? "fluid_solver" : "soil_solver";
-    // A solver command may carry its own arguments: "my_solver --model x" (split at spaces).
-    std::vector<std::string> args;
-    std::istringstream words(requested);
-    for (std::string word; words >> word;) args.push_back(word);
-    if (args.empty()) throw BadInput("the " + phase + " solver command is empty");
+    SolverCommand command;
+    try {
+      command = resolve_solver_command(
+          phase, phase == "water" ? options_.fluid_solver : options_.soil_solver, scene_);
+    } catch (const std::invalid_argument& e) {
+      throw BadInput(e.what());
+    }
+    const std::string& requested = command.requested;
+    const bool user_named = command.user_named;
+    std::vector<std::string>& args = command.args;
     const std::string executable = find_solver_executable(args.front());
     args.erase(args.begin());
     args.insert(args.end(), {"--endpoint", connect});
@@ -210,8 +190,9 @@ void RunSession::start_solvers() {
       throw RunFailure(message);
     }
     try {
-      processes_[phase] =
-          std::make_unique<SolverProcess>(executable, args, solver_environment(connect));
+      processes_[phase] = std::make_unique<SolverProcess>(
+          executable, args,
+          solver_environment(connect, static_cast<unsigned>(scene_.phases().size())));
     } catch (const std::exception& e) {
       if (user_named) throw BadInput(e.what());
       throw RunFailure(e.what());
