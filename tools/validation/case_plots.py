@@ -59,48 +59,49 @@ def dam_break(out, figures, name):
     return [save(fig, figures, name, "front")]
 
 
+def free_field(snap, name):
+    """Field `name` of the free (not wall) particles of a snapshot."""
+    return snap[name][:][snap["fixed"][:] == 0]
+
+
+def against_weight(figures, name, suffix, value, y, t, weight, top, labels):
+    """A vertical profile (value against height) beside the weight of the column above,
+    weight * (top - y). labels: (x axis, y axis, reference)."""
+    fig, ax = plt.subplots(figsize=(5, 3.5))
+    ax.plot(value, y, ".", ms=2, label=f"PoroSPH, t = {t:.2f} s")
+    height = np.linspace(0, top, 50)
+    ax.plot(weight * (top - height), height, "k-", label=labels[2])
+    ax.set_xlabel(labels[0])
+    ax.set_ylabel(labels[1])
+    ax.legend()
+    return [save(fig, figures, name, suffix)]
+
+
 def hydrostatic_tank(out, figures, name):
     snap, t = last_snapshot(os.path.join(out, "fluid.h5"))
-    free = snap["fixed"][:] == 0
-    y, p = snap["position"][:][free, 1], snap["pressure"][:][free]
     params = run_json(out)["parameters"]
-    rho, g = params["water"]["rho0"], abs(params["run"]["gravity"][1])
+    weight = params["water"]["rho0"] * abs(params["run"]["gravity"][1])
     top = params["water"]["blocks"][0]["max"][1]
-    fig, ax = plt.subplots(figsize=(5, 3.5))
-    ax.plot(p, y, ".", ms=2, label=f"PoroSPH, t = {t:.2f} s")
-    depth = np.linspace(0, top, 50)
-    ax.plot(rho * g * (top - depth), depth, "k-", label="rho g (H - z)")
-    ax.set_xlabel("pressure [Pa]")
-    ax.set_ylabel("z [m]")
-    ax.legend()
-    return [save(fig, figures, name, "pressure")]
+    return against_weight(figures, name, "pressure", free_field(snap, "pressure"),
+                          free_field(snap, "position")[:, 1], t, weight, top,
+                          ("pressure [Pa]", "z [m]", "rho g (H - z)"))
 
 
 def soil_column(out, figures, name):
     snap, t = last_snapshot(os.path.join(out, "soil.h5"))
-    free = snap["fixed"][:] == 0
-    y = snap["position"][:][free, 1]
-    stress = snap["stress"][:][free]
     params = run_json(out)["parameters"]
-    rho = params["soil"]["materials"][0]["density"]
-    g = abs(params["run"]["gravity"][1])
+    weight = params["soil"]["materials"][0]["density"] * abs(params["run"]["gravity"][1])
     top = params["soil"]["blocks"][0]["max"][1]
-    syy = stress[:, 4] if stress.shape[1] == 9 else stress[:, 1]
-    fig, ax = plt.subplots(figsize=(5, 3.5))
-    ax.plot(-syy, y, ".", ms=2, label=f"PoroSPH, t = {t:.2f} s")
-    depth = np.linspace(0, top, 50)
-    ax.plot(rho * g * (top - depth), depth, "k-", label="rho g (H - y)")
-    ax.set_xlabel("vertical stress, compression [Pa]")
-    ax.set_ylabel("y [m]")
-    ax.legend()
-    return [save(fig, figures, name, "stress")]
+    syy = free_field(snap, "stress")[:, 4]  # N x 9, row-major 3x3 (README, soil.h5)
+    return against_weight(figures, name, "stress", -syy, free_field(snap, "position")[:, 1], t,
+                          weight, top,
+                          ("vertical stress, compression [Pa]", "y [m]", "rho g (H - y)"))
 
 
 def granular_collapse(out, figures, name):
     snap, t = last_snapshot(os.path.join(out, "soil.h5"))
-    free = snap["fixed"][:] == 0
-    x = snap["position"][:][free]
-    u = np.linalg.norm(snap["displacement"][:][free], axis=1)
+    x = free_field(snap, "position")
+    u = np.linalg.norm(free_field(snap, "displacement"), axis=1)
     fig, ax = plt.subplots(figsize=(7, 2.5))
     sc = ax.scatter(x[:, 0], x[:, 1], c=u, s=1, cmap="viridis")
     fig.colorbar(sc, ax=ax, label="displacement [m]")
@@ -151,12 +152,10 @@ def rockfill(out, figures, name):
         ax.legend()
         paths.append(save(fig, figures, name, "B"))
     snap, t = last_snapshot(os.path.join(out, "soil.h5"))
-    free = snap["fixed"][:] == 0
-    x = snap["position"][:][free]
-    n = snap["porosity"][:][free]
+    x = free_field(snap, "position")
+    n = free_field(snap, "porosity")
     water, _ = last_snapshot(os.path.join(out, "fluid.h5"))
-    wfree = water["fixed"][:] == 0
-    w = water["position"][:][wfree]
+    w = free_field(water, "position")
     fig, ax = plt.subplots(figsize=(9, 3.5))
     sc = ax.scatter(x[:, 0], x[:, 1], c=n, s=3, cmap="copper_r")
     fig.colorbar(sc, ax=ax, label="porosity")
@@ -191,9 +190,8 @@ def hydraulic_heave(out, figures, name):
         axes[1].legend()
     paths.append(save(fig, figures, name, "head_gravel"))
     snap, t = last_snapshot(os.path.join(out, "soil.h5"))
-    free = snap["fixed"][:] == 0
-    x = snap["position"][:][free]
-    m = snap["material"][:][free]
+    x = free_field(snap, "position")
+    m = free_field(snap, "material")
     fig, ax = plt.subplots(figsize=(8, 2.5))
     ax.scatter(x[m == 0, 0], x[m == 0, 1], s=2, c="goldenrod", label="sand")
     ax.scatter(x[m == 1, 0], x[m == 1, 1], s=2, c="dimgray", label="gravel")
