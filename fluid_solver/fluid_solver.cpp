@@ -137,13 +137,7 @@ void FluidSolver<D>::fill_state(coupling::StepState& out, const std::vector<doub
 
   // Overlap set.
   overlap_index_.clear();
-  out.overlap_id.clear();
-  out.overlap_position.clear();
-  out.overlap_velocity.clear();
-  out.overlap_density.clear();
-  out.overlap_mass.clear();
-  out.overlap_porosity.clear();
-  out.overlap_material.clear();
+  out.clear_overlap();
   if (!overlap_min.empty() && !overlap_max.empty()) {
     const Vec lo = sph::to_vec<D>(overlap_min, "overlap_min");
     const Vec hi = sph::to_vec<D>(overlap_max, "overlap_max");

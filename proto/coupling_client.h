@@ -65,6 +65,17 @@ struct StepState {
   Diagnostics diagnostics;
   /// Index of the checkpoint written after the last advance (asked by the last command); 0: none.
   std::uint32_t checkpoint_written = 0;
+
+  /// Empties every overlap array (keeping their capacity: no allocation in steady state).
+  void clear_overlap() {
+    overlap_id.clear();
+    overlap_position.clear();
+    overlap_velocity.clear();
+    overlap_density.clear();
+    overlap_mass.clear();
+    overlap_porosity.clear();
+    overlap_material.clear();
+  }
 };
 
 /// The coupler's answer: the one shared dt and what else to do this step.

@@ -50,13 +50,7 @@ void RigidSoilSolver<D>::fill_state(coupling::StepState& out, const std::vector<
   out.dt_limit = out.dt_cfl = out.dt_viscous = out.dt_force =
       std::numeric_limits<double>::infinity();
   overlap_index_.clear();
-  out.overlap_id.clear();
-  out.overlap_position.clear();
-  out.overlap_velocity.clear();
-  out.overlap_density.clear();
-  out.overlap_mass.clear();
-  out.overlap_porosity.clear();
-  out.overlap_material.clear();
+  out.clear_overlap();
   const bool zone = lo.size() == D && hi.size() == D;
   sph::Vec<D> box_min = sph::Vec<D>::Constant(std::numeric_limits<double>::max());
   sph::Vec<D> box_max = sph::Vec<D>::Constant(std::numeric_limits<double>::lowest());

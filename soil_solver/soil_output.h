@@ -26,13 +26,7 @@ void fill_soil_overlap(const SoilParticles<D>& P, const std::vector<double>& lo,
                        const std::vector<double>& hi, std::vector<std::int32_t>& index,
                        coupling::StepState& out) {
   index.clear();
-  out.overlap_id.clear();
-  out.overlap_position.clear();
-  out.overlap_velocity.clear();
-  out.overlap_density.clear();
-  out.overlap_mass.clear();
-  out.overlap_porosity.clear();
-  out.overlap_material.clear();
+  out.clear_overlap();
   if (lo.size() != D || hi.size() != D) return;
   for (std::size_t i = 0; i < P.size(); ++i) {
     if (P.material[i] < 0) continue;  // walls; fixed soil (a porous bed) does exchange drag
