@@ -12,21 +12,22 @@
 namespace porosph::fluid {
 
 struct ArtificialViscosity {
-  double alpha = 0.05, beta = 0.0, h = 0.0, eta2 = 0.0;
+  double alpha = 0.05, beta = 0.0, h = 0.0;
 
-  /// Pi_ab from v_ab . x_ab, r_ab, the mean sound speed and the mean density of the pair.
-  double pi(double v_dot_x, double r, double c_mean, double rho_mean) const {
+  /// Pi_ab from v_ab . x_ab, 1 / (r_ab^2 + eta^2) (shared with the other regularised terms of
+  /// the pair), the mean sound speed and the mean density of the pair.
+  double pi(double v_dot_x, double inv_r2_eta2, double c_mean, double rho_mean) const {
     if (v_dot_x >= 0.0) return 0.0;
-    const double mu = h * v_dot_x / (r * r + eta2);
+    const double mu = h * v_dot_x * inv_r2_eta2;
     return (-alpha * c_mean * mu + beta * mu * mu) / rho_mean;
   }
 
   /// Acceleration of a due to b.
   template <int D>
-  sph::Vec<D> acceleration(double m_b, const sph::Vec<D>& v_ab, const sph::Vec<D>& x_ab, double r,
-                           double c_a, double c_b, double rho_a, double rho_b,
+  sph::Vec<D> acceleration(double m_b, const sph::Vec<D>& v_ab, const sph::Vec<D>& x_ab,
+                           double inv_r2_eta2, double c_a, double c_b, double rho_a, double rho_b,
                            const sph::Vec<D>& grad_w) const {
-    const double p = pi(v_ab.dot(x_ab), r, 0.5 * (c_a + c_b), 0.5 * (rho_a + rho_b));
+    const double p = pi(v_ab.dot(x_ab), inv_r2_eta2, 0.5 * (c_a + c_b), 0.5 * (rho_a + rho_b));
     return (-m_b * p) * grad_w;
   }
 };

@@ -6,12 +6,12 @@
 
 namespace porosph::fluid {
 
-/// Contribution of neighbour b to the sum of eq. 2: (m_b / rho_b) v_ab . grad_a W_ab.
-/// The caller multiplies the sum by rho_a.
+/// Contribution of neighbour b to the sum of eq. 2: V_b v_ab . grad_a W_ab with the volume
+/// V_b = m_b / rho_b (computed once per particle and step, not per pair). The caller multiplies
+/// the sum by rho_a.
 template <int D>
-inline double continuity_term(double m_b, double rho_b, const sph::Vec<D>& v_ab,
-                              const sph::Vec<D>& grad_w) {
-  return m_b / rho_b * v_ab.dot(grad_w);
+inline double continuity_term(double volume_b, const sph::Vec<D>& v_ab, const sph::Vec<D>& grad_w) {
+  return volume_b * v_ab.dot(grad_w);
 }
 
 }  // namespace porosph::fluid

@@ -50,10 +50,8 @@ class DensityDiffusion {
  public:
   DensityDiffusion() = default;
   /// delta (0: off), smoothing length h, the EOS (rho0, c0, gamma, B) and the gravity vector.
-  DensityDiffusion(double delta, double h, const TaitEos& eos, const sph::Vec<D>& gravity,
-                   double eta2)
+  DensityDiffusion(double delta, double h, const TaitEos& eos, const sph::Vec<D>& gravity)
       : coefficient_(delta * h * eos.c0()),
-        eta2_(eta2),
         rho0_(eos.rho0()),
         inv_gamma_(1.0 / eos.gamma()),
         rho0_g_over_b_(eos.rho0() / eos.b() * gravity) {
@@ -80,22 +78,22 @@ class DensityDiffusion {
   }
 
   /// Summand of D_a for neighbour b, without the factor delta h c0:
-  ///   2 (rho_b - rho_a - rho^H_ab) (x_ba . grad_a W_ab) / (r^2 + eta^2) m_b / rho_b.
-  double pair_term(double rho_a, double rho_b, double m_b, const sph::Vec<D>& x_ab, double r,
-                   const sph::Vec<D>& grad_w) const {
-    const double weight = -2.0 * (x_ab.dot(grad_w) / (r * r + eta2_));  // x_ba . grad W >= 0
-    return m_b / rho_b * (weight * (rho_b - rho_a - hydrostatic_difference(x_ab)));
+  ///   2 (rho_b - rho_a - rho^H_ab) (x_ba . grad_a W_ab) / (r^2 + eta^2) m_b / rho_b,
+  /// from `factor` = x_ab . grad_a W_ab / (r^2 + eta^2) (viscosity_morris.h
+  /// regularised_gradient_factor, shared with the Morris term) and the volume V_b = m_b / rho_b.
+  double pair_term(double rho_a, double rho_b, double volume_b, const sph::Vec<D>& x_ab,
+                   double factor) const {
+    const double weight = -2.0 * factor;  // x_ba . grad W >= 0
+    return volume_b * (weight * (rho_b - rho_a - hydrostatic_difference(x_ab)));
   }
 
   /// The same summand without the hydrostatic correction (Molteni & Colagrossi 2009 as such).
-  double uncorrected_pair_term(double rho_a, double rho_b, double m_b, const sph::Vec<D>& x_ab,
-                               double r, const sph::Vec<D>& grad_w) const {
-    const double weight = -2.0 * x_ab.dot(grad_w) / (r * r + eta2_);
-    return m_b / rho_b * (weight * (rho_b - rho_a));
+  double uncorrected_pair_term(double rho_a, double rho_b, double volume_b, double factor) const {
+    return volume_b * (-2.0 * factor * (rho_b - rho_a));
   }
 
  private:
-  double coefficient_ = 0.0, eta2_ = 0.0, rho0_ = 1000.0, inv_gamma_ = 1.0 / 7.0;
+  double coefficient_ = 0.0, rho0_ = 1000.0, inv_gamma_ = 1.0 / 7.0;
   double c_[5] = {};  ///< binomial series coefficients of hydrostatic_difference()
   sph::Vec<D> rho0_g_over_b_ = sph::Vec<D>::Zero();
 };

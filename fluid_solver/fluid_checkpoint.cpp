@@ -33,6 +33,7 @@ void FluidSolver<D>::write_checkpoint(io::CheckpointWriter& out) {
 
 template <int D>
 void FluidSolver<D>::restore_checkpoint(const io::CheckpointReader& in) {
+  neighbours_.invalidate();
   if (in.get_i64("dimension") != D) {
     throw std::runtime_error(in.path() + ": a checkpoint of a run in another dimension");
   }

@@ -49,7 +49,7 @@ struct FluidParams {
     p.eos = TaitEos(w.rho0, w.sound_speed, w.gamma);
     p.mu = w.viscosity;
     p.eta2 = 0.01 * p.h * p.h;
-    p.artificial = ArtificialViscosity{w.alpha, w.beta, p.h, p.eta2};
+    p.artificial = ArtificialViscosity{w.alpha, w.beta, p.h};
     p.gravity = sph::to_vec<D>(s.run.gravity, "run.gravity");
     if (w.wall_condition != "no_slip" && w.wall_condition != "free_slip") {
       throw std::invalid_argument("water.wall_condition: expected no_slip or free_slip, got '" +

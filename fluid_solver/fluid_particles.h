@@ -21,6 +21,9 @@ struct FluidParticles {
   std::vector<Vec> wall_velocity;      ///< walls: velocity seen by viscous terms (Adami 2012)
   std::vector<double> density, density_previous, density_rate;
   std::vector<double> pressure, sound_speed, mass;
+  /// 1 / rho and m / rho of every particle, derived from density and mass at the start of each
+  /// rate evaluation (fluid_rates.h) so that the pair loop multiplies instead of dividing.
+  std::vector<double> inverse_density, volume;
   std::vector<double> remove_at;  ///< walls: removal time [s] (< 0: never); water: -1
   std::vector<std::int64_t> id;
   std::vector<std::uint8_t> fixed;  ///< 1 for wall particles (snapshot field "fixed")
@@ -91,6 +94,7 @@ struct FluidParticles {
     fn(p.position...), fn(p.velocity...), fn(p.velocity_previous...), fn(p.acceleration...);
     fn(p.interaction...), fn(p.wall_velocity...), fn(p.density...), fn(p.density_previous...);
     fn(p.density_rate...), fn(p.pressure...), fn(p.sound_speed...), fn(p.mass...);
+    fn(p.inverse_density...), fn(p.volume...);
     fn(p.remove_at...), fn(p.id...), fn(p.fixed...), fn(p.zone...);
   }
 

@@ -18,57 +18,70 @@ template <int D, class Kernel, bool kMorris, bool kArtificial, bool kNoSlip, boo
 RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
                        const FluidParams<D>& prm, FluidParticles<D>& P) {
   using Vec = sph::Vec<D>;
+  constexpr bool kRegularised = kMorris || kArtificial || kDiffusion;  // need 1/(r^2 + eta^2)
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
   const Vec* vel = P.velocity.data();
   const Vec* wall_v = P.wall_velocity.data();
   const double* rho = P.density.data();
+  const double* inv_rho = P.inverse_density.data();
+  const double* volume = P.volume.data();
   const double* p = P.pressure.data();
   const double* c = P.sound_speed.data();
   const double* m = P.mass.data();
   const double mu = prm.mu, eta2 = prm.eta2;
   const ArtificialViscosity av = prm.artificial;
   const Vec g = prm.gravity;
-  const DensityDiffusion<D> diffusion(prm.density_diffusion, prm.h, prm.eos, g, eta2);
+  const DensityDiffusion<D> diffusion(prm.density_diffusion, prm.h, prm.eos, g);
   double max_v2 = 0.0, max_a2 = 0.0;
 #pragma omp parallel for schedule(dynamic, 256) reduction(max : max_v2, max_a2)
   for (std::int64_t a = 0; a < n; ++a) {
     const Vec v_a = vel[a];
-    const double rho_a = rho[a], p_a = p[a], c_a = c[a];
+    const double rho_a = rho[a], inv_rho_a = inv_rho[a], p_a = p[a], c_a = c[a];
     Vec acc = Vec::Zero();
     double divergence = 0.0;
     double diffusion_sum = 0.0;  // D_a / (delta h c0), water neighbours only (density_diffusion.h)
     // Water neighbours.
     for (auto it = nl.begin(a); it != nl.mid(a); ++it) {
       const std::int32_t b = it->b;
-      const Vec grad_w = kernel.grad_factor(it->r) * it->x_ab;
+      const double grad_factor = kernel.grad_factor(it->r);
+      const Vec grad_w = grad_factor * it->x_ab;
       const Vec v_ab = v_a - vel[b];
-      divergence += continuity_term<D>(m[b], rho[b], v_ab, grad_w);
-      if constexpr (kDiffusion) {
-        diffusion_sum += diffusion.pair_term(rho_a, rho[b], m[b], it->x_ab, it->r, grad_w);
-      }
-      acc += pressure_acceleration<D>(m[b], p_a, p[b], rho_a, rho[b], grad_w);
-      if constexpr (kMorris) {
-        acc += morris_viscous_acceleration<D>(m[b], mu, mu, rho_a, rho[b], it->x_ab, it->r, grad_w,
-                                              v_ab, eta2);
-      }
-      if constexpr (kArtificial) {
-        acc += av.acceleration<D>(m[b], v_ab, it->x_ab, it->r, c_a, c[b], rho_a, rho[b], grad_w);
+      divergence += continuity_term<D>(volume[b], v_ab, grad_w);
+      acc += pressure_acceleration<D>(m[b], p_a, p[b], inv_rho_a, inv_rho[b], grad_w);
+      if constexpr (kRegularised) {
+        const double r2 = it->r * it->r;
+        const double inv_r2_eta2 = 1.0 / (r2 + eta2);
+        const double factor = regularised_gradient_factor(grad_factor * r2, inv_r2_eta2);
+        if constexpr (kDiffusion) {
+          diffusion_sum += diffusion.pair_term(rho_a, rho[b], volume[b], it->x_ab, factor);
+        }
+        if constexpr (kMorris) {
+          acc += morris_viscous_acceleration<D>(m[b], mu, mu, inv_rho_a, inv_rho[b], factor, v_ab);
+        }
+        if constexpr (kArtificial) {
+          acc += av.acceleration<D>(m[b], v_ab, it->x_ab, inv_r2_eta2, c_a, c[b], rho_a, rho[b],
+                                    grad_w);
+        }
       }
     }
     // Wall neighbours (Adami 2012): own velocity in eq. 2, mirrored velocity in viscous terms.
     for (auto it = nl.mid(a); it != nl.end(a); ++it) {
       const std::int32_t b = it->b;
-      const Vec grad_w = kernel.grad_factor(it->r) * it->x_ab;
-      divergence += continuity_term<D>(m[b], rho[b], Vec(v_a - vel[b]), grad_w);
-      acc += pressure_acceleration<D>(m[b], p_a, p[b], rho_a, rho[b], grad_w);
+      const double grad_factor = kernel.grad_factor(it->r);
+      const Vec grad_w = grad_factor * it->x_ab;
+      divergence += continuity_term<D>(volume[b], Vec(v_a - vel[b]), grad_w);
+      acc += pressure_acceleration<D>(m[b], p_a, p[b], inv_rho_a, inv_rho[b], grad_w);
       if constexpr (kNoSlip && (kMorris || kArtificial)) {
         const Vec v_ab = v_a - wall_v[b];
+        const double r2 = it->r * it->r;
+        const double inv_r2_eta2 = 1.0 / (r2 + eta2);
         if constexpr (kMorris) {
-          acc += morris_viscous_acceleration<D>(m[b], mu, mu, rho_a, rho[b], it->x_ab, it->r,
-                                                grad_w, v_ab, eta2);
+          const double factor = regularised_gradient_factor(grad_factor * r2, inv_r2_eta2);
+          acc += morris_viscous_acceleration<D>(m[b], mu, mu, inv_rho_a, inv_rho[b], factor, v_ab);
         }
         if constexpr (kArtificial) {
-          acc += av.acceleration<D>(m[b], v_ab, it->x_ab, it->r, c_a, c[b], rho_a, rho[b], grad_w);
+          acc += av.acceleration<D>(m[b], v_ab, it->x_ab, inv_r2_eta2, c_a, c[b], rho_a, rho[b],
+                                    grad_w);
         }
       }
     }
@@ -111,6 +124,18 @@ RateSummary dispatch_artificial(const sph::NeighbourList<D>& nl, const Kernel& k
 }  // namespace
 
 template <int D>
+void update_inverse_density_and_volume(FluidParticles<D>& P) {
+  const std::int64_t n = static_cast<std::int64_t>(P.size());
+  P.inverse_density.resize(P.size());
+  P.volume.resize(P.size());
+#pragma omp parallel for schedule(static)
+  for (std::int64_t b = 0; b < n; ++b) {
+    P.inverse_density[b] = 1.0 / P.density[b];
+    P.volume[b] = P.mass[b] * P.inverse_density[b];
+  }
+}
+
+template <int D>
 void update_water_pressure(const FluidParams<D>& params, FluidParticles<D>& P) {
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
   const TaitEos eos = params.eos;
@@ -124,6 +149,7 @@ void update_water_pressure(const FluidParams<D>& params, FluidParticles<D>& P) {
 template <int D, class Kernel>
 RateSummary compute_fluid_rates(const sph::NeighbourList<D>& neighbours, const Kernel& kernel,
                                 const FluidParams<D>& params, FluidParticles<D>& P) {
+  update_inverse_density_and_volume(P);
   if (params.morris_on())
     return dispatch_artificial<D, Kernel, true>(neighbours, kernel, params, P);
   return dispatch_artificial<D, Kernel, false>(neighbours, kernel, params, P);
@@ -137,6 +163,8 @@ POROSPH_INSTANTIATE(2, sph::WendlandC2)
 POROSPH_INSTANTIATE(3, sph::CubicSpline)
 POROSPH_INSTANTIATE(3, sph::WendlandC2)
 #undef POROSPH_INSTANTIATE
+template void update_inverse_density_and_volume<2>(FluidParticles<2>&);
+template void update_inverse_density_and_volume<3>(FluidParticles<3>&);
 template void update_water_pressure<2>(const FluidParams<2>&, FluidParticles<2>&);
 template void update_water_pressure<3>(const FluidParams<3>&, FluidParticles<3>&);
 

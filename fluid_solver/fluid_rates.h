@@ -26,7 +26,12 @@ struct RateSummary {
 template <int D>
 void update_water_pressure(const FluidParams<D>& params, FluidParticles<D>& P);
 
-/// Fills P.acceleration and P.density_rate of the water particles. Walls must be up to date
+/// P.inverse_density = 1 / rho and P.volume = m / rho of every particle (water and walls).
+template <int D>
+void update_inverse_density_and_volume(FluidParticles<D>& P);
+
+/// Fills P.inverse_density, P.volume (update_inverse_density_and_volume), P.acceleration and
+/// P.density_rate of the water particles. Walls must be up to date
 /// (update_wall_state) and water pressures too (update_water_pressure).
 template <int D, class Kernel>
 RateSummary compute_fluid_rates(const sph::NeighbourList<D>& neighbours, const Kernel& kernel,

@@ -17,8 +17,9 @@
 namespace porosph::fluid {
 namespace {
 
-/// Water particles are re-sorted by cell this often (steps), for memory locality of the pair loops.
-constexpr std::uint64_t kReorderEvery = 20;
+/// Water particles are re-sorted by cell this often (steps), for memory locality of the pair loops
+/// (each re-sort forces a neighbour search: 100 measured faster than 20 on the dam break).
+constexpr std::uint64_t kReorderEvery = 100;
 
 class StopWatch {
  public:
@@ -56,6 +57,7 @@ FluidSolver<D>::FluidSolver(const scene::Scene& s)
   particles_ = std::move(initial.particles);
   next_wall_removal_ = initial.next_wall_removal;
   next_id_ = static_cast<std::int64_t>(particles_.size());
+  neighbours_.set_skin(sph::kSolverSkinFraction * 2.0 * params_.h);
   reorder_by_cell();
 }
 
@@ -67,6 +69,7 @@ void FluidSolver<D>::build_neighbours() {
 
 template <int D>
 void FluidSolver<D>::reorder_by_cell() {
+  neighbours_.invalidate();  // a search now: the current cell order, whatever the last search
   build_neighbours();
   const std::size_t n_free = particles_.n_free;
   order_scratch_.clear();
@@ -80,6 +83,7 @@ void FluidSolver<D>::reorder_by_cell() {
       order_scratch_.push_back(static_cast<std::int32_t>(i));
   }
   particles_.permute(order_scratch_);
+  neighbours_.invalidate();
   build_neighbours();
 }
 

@@ -10,14 +10,20 @@
 
 namespace porosph::fluid {
 
-/// Acceleration of a due to b from the Morris term; eta2 = 0.01 h^2.
+/// x_ab . grad_a W_ab / (r_ab^2 + eta^2) from x_ab . grad_a W_ab and 1 / (r_ab^2 + eta^2): the
+/// regularised (1/r) dW/dr shared by the Morris term and the density diffusion (one division per
+/// pair for both).
+inline double regularised_gradient_factor(double x_dot_grad_w, double inv_r2_eta2) {
+  return x_dot_grad_w * inv_r2_eta2;
+}
+
+/// Acceleration of a due to b from the Morris term; `factor` = regularised_gradient_factor(),
+/// the densities as their inverses.
 template <int D>
-inline sph::Vec<D> morris_viscous_acceleration(double m_b, double mu_a, double mu_b, double rho_a,
-                                               double rho_b, const sph::Vec<D>& x_ab, double r,
-                                               const sph::Vec<D>& grad_w, const sph::Vec<D>& v_ab,
-                                               double eta2) {
-  const double factor = x_ab.dot(grad_w) / (r * r + eta2);
-  return (m_b * (mu_a + mu_b) / (rho_a * rho_b) * factor) * v_ab;
+inline sph::Vec<D> morris_viscous_acceleration(double m_b, double mu_a, double mu_b,
+                                               double inv_rho_a, double inv_rho_b, double factor,
+                                               const sph::Vec<D>& v_ab) {
+  return (m_b * (mu_a + mu_b) * (inv_rho_a * inv_rho_b) * factor) * v_ab;
 }
 
 }  // namespace porosph::fluid

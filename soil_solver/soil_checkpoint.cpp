@@ -30,6 +30,7 @@ void SoilSolver<D>::write_checkpoint(io::CheckpointWriter& out) {
 
 template <int D>
 void SoilSolver<D>::restore_checkpoint(const io::CheckpointReader& in) {
+  neighbours_.invalidate();
   if (in.get_i64("dimension") != D) {
     throw std::runtime_error(in.path() + ": a checkpoint of a run in another dimension");
   }

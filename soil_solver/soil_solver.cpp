@@ -19,7 +19,7 @@ namespace porosph::soil {
 namespace {
 
 /// Free soil particles are re-sorted by cell this often (steps), for memory locality.
-constexpr std::uint64_t kReorderEvery = 20;
+constexpr std::uint64_t kReorderEvery = 100;
 
 }  // namespace
 
@@ -114,6 +114,7 @@ SoilSolver<D>::SoilSolver(const scene::Scene& s)
     P.no_slip[i] = q.no_slip ? 1 : 0;
   }
   if (params_.geostatic_initial) apply_geostatic_stress<D>(params_, P);
+  neighbours_.set_skin(sph::kSolverSkinFraction * 2.0 * params_.h);
   reorder_by_cell();
 }
 
@@ -125,6 +126,7 @@ void SoilSolver<D>::build_neighbours() {
 
 template <int D>
 void SoilSolver<D>::reorder_by_cell() {
+  neighbours_.invalidate();  // a search now: the current cell order, whatever the last search
   build_neighbours();
   const std::size_t n_free = particles_.n_free;
   order_scratch_.clear();
@@ -133,6 +135,7 @@ void SoilSolver<D>::reorder_by_cell() {
   for (std::size_t i = n_free; i < particles_.size(); ++i)  // fixed particles never move
     order_scratch_.push_back(static_cast<std::int32_t>(i));
   particles_.permute(order_scratch_);
+  neighbours_.invalidate();
   build_neighbours();
 }
 

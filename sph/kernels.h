@@ -8,6 +8,7 @@
 //   support()       radius beyond which W = 0 (2h for both kernels here)
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "sph/vector.h"
@@ -55,14 +56,14 @@ class CubicSpline {
     return 0.0;
   }
 
+  /// Both branches are evaluated and one is selected (no data-dependent jump: the inner/outer
+  /// test is a coin toss per pair in a neighbour loop); the outer one is guarded against q = 0.
   double grad_factor(double r) const {
     const double q = r * inv_h_;
-    if (q < 1.0) return sigma_ * inv_h_ * inv_h_ * (-3.0 + 2.25 * q);
-    if (q < 2.0) {
-      const double t = 2.0 - q;
-      return -0.75 * sigma_ * inv_h_ * t * t / r;
-    }
-    return 0.0;
+    const double t = std::max(2.0 - q, 0.0);
+    const double inner = -3.0 + 2.25 * q;
+    const double outer = -0.75 * t * t / std::max(q, 1.0);
+    return sigma_ * inv_h_ * inv_h_ * (q < 1.0 ? inner : outer);
   }
 
   Vec<D> gradient(const Vec<D>& x_ab, double r) const { return grad_factor(r) * x_ab; }

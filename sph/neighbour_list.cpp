@@ -8,9 +8,16 @@
 
 namespace porosph::sph {
 
+namespace {
+/// Particles per work chunk of the list passes (handed out dynamically: robust to the uneven work
+/// of free-surface cells and to a core shared with another process).
+constexpr std::size_t kChunk = 256;
+}  // namespace
+
 template <int D>
 void NeighbourList<D>::build(const Vec<D>* x, std::size_t n, std::size_t n_free, double support,
                              const DomainBox<D>& box) {
+  const bool search = needs_search(x, n, n_free, support, box);
   n_ = n;
   n_free_ = std::min(n_free, n);
   support_ = support;
@@ -20,13 +27,46 @@ void NeighbourList<D>::build(const Vec<D>* x, std::size_t n, std::size_t n_free,
   end_.resize(n);
   pair_count_ = 0;
   if (n == 0) return;
-  setup_grid(x);
-  sort_into_cells(x);
-  if (box.any_periodic()) {
-    fill_lists<true>(x);
-  } else {
-    fill_lists<false>(x);
+  if (search) {
+    setup_grid(x);
+    sort_into_cells(x);
+    if (box.any_periodic()) {
+      search_candidates<true>(x);
+    } else {
+      search_candidates<false>(x);
+    }
+    searched_position_.assign(x, x + n);
+    searched_ = true;
+    ++search_count_;
   }
+  if (box.any_periodic()) {
+    refresh_pairs<true>(x);
+  } else {
+    refresh_pairs<false>(x);
+  }
+}
+
+template <int D>
+bool NeighbourList<D>::needs_search(const Vec<D>* x, std::size_t n, std::size_t n_free,
+                                    double support, const DomainBox<D>& box) const {
+  if (!searched_ || n != n_ || std::min(n_free, n) != n_free_ || support != support_) return true;
+  for (int k = 0; k < D; ++k) {
+    if (box.periodic[k] != box_.periodic[k] || box.min[k] != box_.min[k] ||
+        box.max[k] != box_.max[k])
+      return true;
+  }
+  // Any particle farther than skin/2 from where it was searched (a NaN counts as moved). With
+  // skin 0 every motion triggers a search. Periodic axes: the wrapped position jumps by a box
+  // length when a particle crosses, which counts as moved (a search, never a missed pair).
+  const double limit2 = 0.25 * skin_ * skin_;
+  const std::int64_t count = static_cast<std::int64_t>(n);
+  bool moved = false;
+#pragma omp parallel for schedule(static) reduction(|| : moved)
+  for (std::int64_t a = 0; a < count; ++a) {
+    const double d2 = (x[a] - searched_position_[a]).squaredNorm();
+    moved = moved || !(d2 <= limit2);
+  }
+  return moved;
 }
 
 template <int D>
@@ -53,7 +93,7 @@ void NeighbourList<D>::setup_grid(const Vec<D>* x) {
       hi = hi.cwiseMax(thi);
     }
   }
-  grid_.lay_out(lo, hi, support_, box_, n_);
+  grid_.lay_out(lo, hi, support_ + skin_, box_, n_);
 }
 
 template <int D>
@@ -149,10 +189,75 @@ int NeighbourList<D>::stencil_of(std::int64_t cell, std::int64_t* out) const {
 
 template <int D>
 template <bool kPeriodic>
-void NeighbourList<D>::fill_lists(const Vec<D>* x) {
-  // Chunks of particles are handed out dynamically (robust to load imbalance and to a core shared
-  // with another process); each thread appends the lists of its chunks to its own buffer.
-  constexpr std::size_t kChunk = 256;
+void NeighbourList<D>::search_candidates(const Vec<D>* x) {
+  // Each thread appends the candidate indices of its chunks to its own buffer. Every candidate is
+  // written and kept only if in range (the cursor advances by the test's outcome): no
+  // data-dependent jump per candidate. Buffer sizes only grow: no allocation in steady state.
+  const std::int64_t chunks = static_cast<std::int64_t>((n_ + kChunk - 1) / kChunk);
+  const int max_threads = omp_get_max_threads();
+  if (static_cast<int>(candidate_buffers_.size()) < max_threads)
+    candidate_buffers_.resize(max_threads);
+  candidate_offsets_.resize(3 * n_);
+  candidate_owner_.resize(chunks);
+  const double reach = support_ + skin_, reach2 = reach * reach;
+#pragma omp parallel
+  {
+    const int t = omp_get_thread_num();
+    std::vector<std::int32_t>& buffer = candidate_buffers_[t];
+    std::size_t used = 0;
+    std::int64_t stencil[27];
+    int stencil_size = 0;
+    std::int64_t last_cell = -1;
+    auto scan = [&](std::size_t a, const Vec<D>& xa, std::int32_t j0, std::int32_t j1) {
+      std::int32_t* out = buffer.data();
+      for (std::int32_t j = j0; j < j1; ++j) {
+        const std::int32_t b = sorted_index_[j];
+        Vec<D> dx = xa - sorted_position_[j];
+        if constexpr (kPeriodic) box_.minimum_image(dx);
+        out[used] = b;
+        used += static_cast<std::size_t>((dx.squaredNorm() < reach2) &
+                                         (b != static_cast<std::int32_t>(a)));
+      }
+    };
+#pragma omp for schedule(dynamic, 1)
+    for (std::int64_t chunk = 0; chunk < chunks; ++chunk) {
+      candidate_owner_[chunk] = t;
+      const std::size_t a1 = std::min(n_, static_cast<std::size_t>(chunk + 1) * kChunk);
+      for (std::size_t a = static_cast<std::size_t>(chunk) * kChunk; a < a1; ++a) {
+        if (cell_of_[a] != last_cell) {
+          last_cell = cell_of_[a];
+          stencil_size = stencil_of(last_cell, stencil);
+        }
+        std::size_t room = 0;
+        for (int s = 0; s < stencil_size; ++s)
+          room += static_cast<std::size_t>(cell_start_[stencil[s] + 1] - cell_start_[stencil[s]]);
+        if (used + room > buffer.size()) buffer.resize(std::max(2 * buffer.size(), used + room));
+        const Vec<D> xa = x[a];
+        candidate_offsets_[3 * a] = static_cast<std::uint32_t>(used);
+        for (int s = 0; s < stencil_size; ++s)
+          scan(a, xa, cell_start_[stencil[s]], cell_free_end_[stencil[s]]);
+        candidate_offsets_[3 * a + 1] = static_cast<std::uint32_t>(used);
+        if (a < n_free_) {
+          for (int s = 0; s < stencil_size; ++s)
+            scan(a, xa, cell_free_end_[stencil[s]], cell_start_[stencil[s] + 1]);
+        }
+        candidate_offsets_[3 * a + 2] = static_cast<std::uint32_t>(used);
+        // Index order: the lists (and so every sum over them) do not depend on when the search
+        // ran, so a resumed run sums in the same order as an uninterrupted one.
+        std::int32_t* c = buffer.data();
+        std::sort(c + candidate_offsets_[3 * a], c + candidate_offsets_[3 * a + 1]);
+        std::sort(c + candidate_offsets_[3 * a + 1], c + used);
+      }
+    }
+  }
+}
+
+template <int D>
+template <bool kPeriodic>
+void NeighbourList<D>::refresh_pairs(const Vec<D>* x) {
+  // The pair lists from the candidates at the current positions; same chunks as the search, each
+  // thread writes its chunks' lists to its own buffer (branch-free keep, square roots of the kept
+  // pairs only).
   const std::int64_t chunks = static_cast<std::int64_t>((n_ + kChunk - 1) / kChunk);
   const int max_threads = omp_get_max_threads();
   if (static_cast<int>(buffers_.size()) < max_threads) buffers_.resize(max_threads);
@@ -164,42 +269,34 @@ void NeighbourList<D>::fill_lists(const Vec<D>* x) {
   {
     const int t = omp_get_thread_num();
     std::vector<Pair>& buffer = buffers_[t];
-    buffer.clear();
-    std::int64_t stencil[27];
-    int stencil_size = 0;
-    std::int64_t last_cell = -1;
-    auto scan = [&](std::size_t a, const Vec<D>& xa, std::int32_t j0, std::int32_t j1) {
-      for (std::int32_t j = j0; j < j1; ++j) {
-        const std::int32_t b = sorted_index_[j];
-        Vec<D> dx = xa - sorted_position_[j];
+    std::size_t used = 0;
+    auto keep_in_range = [&](const Vec<D>& xa, const std::int32_t* c0, const std::int32_t* c1) {
+      Pair* out = buffer.data();
+      for (const std::int32_t* c = c0; c != c1; ++c) {
+        Vec<D> dx = xa - x[*c];
         if constexpr (kPeriodic) box_.minimum_image(dx);
         const double r2 = dx.squaredNorm();
-        if (r2 < support2 && b != static_cast<std::int32_t>(a)) {
-          buffer.push_back(Pair{dx, std::sqrt(r2), b});
-        }
+        out[used] = Pair{dx, r2, *c};  // r2 for now: the square root only for the kept pairs
+        used += static_cast<std::size_t>(r2 < support2);
       }
     };
 #pragma omp for schedule(dynamic, 1)
     for (std::int64_t chunk = 0; chunk < chunks; ++chunk) {
       chunk_owner_[chunk] = t;
-      const std::size_t a1 = std::min(n_, static_cast<std::size_t>(chunk + 1) * kChunk);
-      for (std::size_t a = static_cast<std::size_t>(chunk) * kChunk; a < a1; ++a) {
-        if (cell_of_[a] != last_cell) {
-          last_cell = cell_of_[a];
-          stencil_size = stencil_of(last_cell, stencil);
-        }
+      const std::int32_t* candidates = candidate_buffers_[candidate_owner_[chunk]].data();
+      const std::size_t a0 = static_cast<std::size_t>(chunk) * kChunk;
+      const std::size_t a1 = std::min(n_, a0 + kChunk);
+      const std::size_t room = candidate_offsets_[3 * (a1 - 1) + 2] - candidate_offsets_[3 * a0];
+      if (used + room > buffer.size()) buffer.resize(std::max(2 * buffer.size(), used + room));
+      for (std::size_t a = a0; a < a1; ++a) {
+        const std::uint32_t* o = &candidate_offsets_[3 * a];
         const Vec<D> xa = x[a];
-        offsets_[3 * a] = static_cast<std::uint32_t>(buffer.size());
-        for (int s = 0; s < stencil_size; ++s) {
-          scan(a, xa, cell_start_[stencil[s]], cell_free_end_[stencil[s]]);
-        }
-        offsets_[3 * a + 1] = static_cast<std::uint32_t>(buffer.size());
-        if (a < n_free_) {
-          for (int s = 0; s < stencil_size; ++s) {
-            scan(a, xa, cell_free_end_[stencil[s]], cell_start_[stencil[s] + 1]);
-          }
-        }
-        offsets_[3 * a + 2] = static_cast<std::uint32_t>(buffer.size());
+        offsets_[3 * a] = static_cast<std::uint32_t>(used);
+        keep_in_range(xa, candidates + o[0], candidates + o[1]);
+        offsets_[3 * a + 1] = static_cast<std::uint32_t>(used);
+        keep_in_range(xa, candidates + o[1], candidates + o[2]);
+        offsets_[3 * a + 2] = static_cast<std::uint32_t>(used);
+        for (std::size_t k = offsets_[3 * a]; k < used; ++k) buffer[k].r = std::sqrt(buffer[k].r);
       }
     }  // implicit barrier: every buffer is final, offsets become pointers
     const std::int64_t n = static_cast<std::int64_t>(n_);
@@ -210,7 +307,7 @@ void NeighbourList<D>::fill_lists(const Vec<D>* x) {
       mid_[a] = base + offsets_[3 * a + 1];
       end_[a] = base + offsets_[3 * a + 2];
     }
-    total += buffer.size();
+    total += used;
   }
   pair_count_ = total;
 }

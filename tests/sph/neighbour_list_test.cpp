@@ -131,5 +131,81 @@ TEST(SphNeighbourList, ReusedAcrossBuildsWithChangingSizes) {
   }
 }
 
+/// Lists of `a` and `b` are the same pairs in the same order with the same x_ab and r (bitwise:
+/// both come from the same positions by the same arithmetic).
+template <int D>
+void expect_identical_lists(const NeighbourList<D>& a, const NeighbourList<D>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  ASSERT_EQ(a.pair_count(), b.pair_count());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a.end(i) - a.begin(i), b.end(i) - b.begin(i)) << "particle " << i;
+    ASSERT_EQ(a.mid(i) - a.begin(i), b.mid(i) - b.begin(i)) << "particle " << i;
+    for (auto p = a.begin(i), q = b.begin(i); p != a.end(i); ++p, ++q) {
+      EXPECT_EQ(p->b, q->b);
+      EXPECT_EQ(p->r, q->r);
+      EXPECT_EQ(p->x_ab, q->x_ab);
+    }
+  }
+}
+
+template <int D>
+void expect_skin_reuse_matches_fresh_search(const DomainBox<D>& box, std::size_t n_free) {
+  const double support = 0.03, skin = 0.1 * support;
+  auto x = random_points<D>(600, box, 21);
+  NeighbourList<D> reused;
+  reused.set_skin(skin);
+  reused.build(x.data(), x.size(), n_free, support, box);
+  ASSERT_EQ(reused.search_count(), 1u);
+  // Three moves of every free particle by 0.16 skin each: at most 0.48 skin from where they were
+  // searched, under the skin/2 that forces a search, so the lists are only refreshed - and must
+  // equal a fresh search's at the new positions, pair for pair and bit for bit.
+  std::mt19937 rng(5);
+  std::normal_distribution<double> normal;
+  for (int move = 0; move < 3; ++move) {
+    for (std::size_t i = 0; i < n_free; ++i) {
+      Vec<D> d;
+      for (int k = 0; k < D; ++k) d[k] = normal(rng);
+      const Vec<D> step = (0.16 * skin / d.norm()) * d;
+      bool leaves = false;  // a wrap across a periodic face is a jump by the box: move back
+      for (int k = 0; k < D; ++k)
+        leaves = leaves || (box.periodic[k] &&
+                            !(x[i][k] + step[k] >= box.min[k] && x[i][k] + step[k] < box.max[k]));
+      x[i] += leaves ? Vec<D>(-step) : step;
+    }
+    reused.build(x.data(), x.size(), n_free, support, box);
+    NeighbourList<D> fresh;
+    fresh.build(x.data(), x.size(), n_free, support, box);
+    expect_identical_lists(reused, fresh);
+  }
+  EXPECT_EQ(reused.search_count(), 1u) << "no particle moved skin/2: no new search";
+  // One particle jumps by 0.6 skin: a search, and the lists still match the brute force.
+  x[0][0] += 0.6 * skin;
+  reused.build(x.data(), x.size(), n_free, support, box);
+  EXPECT_EQ(reused.search_count(), 2u);
+  NeighbourList<D> fresh;
+  fresh.build(x.data(), x.size(), n_free, support, box);
+  expect_identical_lists(reused, fresh);
+  expect_matches_brute_force(x, n_free, support, box);
+  // invalidate() forces the next search even without motion.
+  reused.invalidate();
+  reused.build(x.data(), x.size(), n_free, support, box);
+  EXPECT_EQ(reused.search_count(), 3u);
+}
+
+TEST(SphNeighbourList, SkinReusesTheSearchAndMatchesAFreshOne2D) {
+  DomainBox<2> box;
+  box.min = Vec<2>(0, 0);
+  box.max = Vec<2>(0.2, 0.2);
+  expect_skin_reuse_matches_fresh_search(box, 450);
+}
+
+TEST(SphNeighbourList, SkinReusesTheSearchAndMatchesAFreshOnePeriodic3D) {
+  DomainBox<3> box;
+  box.min = Vec<3>(0, 0, 0);
+  box.max = Vec<3>(0.12, 0.12, 0.12);
+  box.periodic = {true, false, true};
+  expect_skin_reuse_matches_fresh_search(box, 600);
+}
+
 }  // namespace
 }  // namespace porosph::sph
