@@ -36,14 +36,13 @@ class CubicSpline {
   double h() const { return h_; }
   double support() const { return 2.0 * h_; }
 
+  /// Branch-free like grad_factor().
   double w(double r) const {
     const double q = r * inv_h_;
-    if (q < 1.0) return sigma_ * (1.0 - 1.5 * q * q + 0.75 * q * q * q);
-    if (q < 2.0) {
-      const double t = 2.0 - q;
-      return 0.25 * sigma_ * t * t * t;
-    }
-    return 0.0;
+    const double t = std::max(0.0, 2.0 - q);  // this argument order maps a NaN q to 0
+    const double inner = 1.0 - 1.5 * q * q + 0.75 * q * q * q;
+    const double outer = 0.25 * t * t * t;
+    return sigma_ * (q < 1.0 ? inner : outer);
   }
 
   double dw_dr(double r) const {
@@ -60,9 +59,9 @@ class CubicSpline {
   /// test is a coin toss per pair in a neighbour loop); the outer one is guarded against q = 0.
   double grad_factor(double r) const {
     const double q = r * inv_h_;
-    const double t = std::max(2.0 - q, 0.0);
+    const double t = std::max(0.0, 2.0 - q);  // this argument order maps a NaN q to 0
     const double inner = -3.0 + 2.25 * q;
-    const double outer = -0.75 * t * t / std::max(q, 1.0);
+    const double outer = -0.75 * t * t / std::max(1.0, q);
     return sigma_ * inv_h_ * inv_h_ * (q < 1.0 ? inner : outer);
   }
 

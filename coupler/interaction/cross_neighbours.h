@@ -1,9 +1,16 @@
-// Soil-water neighbour search of the coupler: a cell list over the soil overlap particles, queried
-// with each water overlap particle (DESIGN.md section 1, step 3). O(N): cells of size >= the kernel
-// support, so a query scans at most 3^D cells. The grid covers the soil's bounding box on
-// non-periodic axes and the domain box on periodic ones, where displacements follow the minimum
-// image (sph::DomainBox) and every pair is found exactly once, also when the periodic axis holds
-// fewer than 3 cells. Buffers are reused: no allocation in steady state.
+// Soil-water neighbour search of the coupler (DESIGN.md section 1, step 3): for each water overlap
+// particle, the soil overlap particles within the kernel support. O(N): a cell list over the soil
+// (cells of size >= support + skin, so a query scans at most 3^D cells), queried with each water
+// particle. The grid covers the soil's bounding box on non-periodic axes and the domain box on
+// periodic ones, where displacements follow the minimum image (sph::DomainBox) and every pair is
+// found exactly once, also when the periodic axis holds fewer than 3 cells.
+//
+// Verlet skin (as sph/neighbour_list.h): the cell search collects, per water particle, the soil
+// particles within support + skin (candidates); later steps reuse them while both overlap sets
+// hold the same particles in the same order (ids) and none moved more than skin/2 since, and only
+// test the candidates' current distances. Candidates are in soil index order, so the sums over
+// them do not depend on the step of the last search (a resumed run sums like an uninterrupted
+// one). Buffers are reused: no allocation in steady state.
 #pragma once
 
 #include <cmath>
@@ -17,38 +24,82 @@
 
 namespace porosph::coupler {
 
+/// One overlap set as the coupler received it: ids and flattened positions (n x D).
+struct OverlapPoints {
+  const std::int64_t* id = nullptr;
+  const double* position = nullptr;
+  std::size_t size = 0;
+};
+
 template <int D>
 class CrossNeighbours {
  public:
-  /// Sorts the `n` soil particles at `positions` (flattened, n x D) into cells of size >=
-  /// `support`. Non-finite coordinates are tolerated (such a particle has no neighbours).
-  void build(const double* positions, std::size_t n, double support, const sph::DomainBox<D>& box);
+  /// Skin [m] (>= 0; 0: a cell search every step).
+  void set_skin(double skin) {
+    skin_ = skin > 0.0 ? skin : 0.0;
+    searched_ = false;
+  }
 
-  std::size_t size() const { return order_.size(); }
+  /// Makes the candidates current for these soil and water sets (a cell search when needed).
+  /// Non-finite coordinates are tolerated (such a particle has no neighbours).
+  void update(const OverlapPoints& soil, const OverlapPoints& water, double support,
+              const sph::DomainBox<D>& box);
+
+  std::size_t soil_size() const { return soil_count_; }
   double support() const { return support_; }
-  /// Slot -> index into the arrays given to build(); slots are ordered by cell.
-  const std::vector<std::int32_t>& order() const { return order_; }
+  /// Cell searches so far (the other update() calls reused the candidates).
+  std::uint64_t search_count() const { return search_count_; }
 
-  /// Calls visit(slot, x_ws, r) for every soil particle within r < support of the point `x`
-  /// (a water particle), with x_ws = x - x_soil (minimum image) and r = |x_ws|.
+  /// Calls visit(i, x_ws, r) for every candidate soil particle i (index into the soil set) of
+  /// water particle `a`, with x_ws = x_a - x_i (minimum image) and r = |x_ws|, at the current
+  /// positions of the sets given to the last update(). Every soil particle within r < support is
+  /// visited; so are a few up to support + skin (no data-dependent jump per candidate): kernels
+  /// vanish there, and the caller counts pairs with r < support().
   template <class Visit>
-  void for_each_within(sph::Vec<D> x, Visit&& visit) const;
+  void for_each_candidate(std::size_t a, Visit&& visit) const;
 
  private:
+  bool needs_search(const OverlapPoints& soil, const OverlapPoints& water, double support,
+                    const sph::DomainBox<D>& box) const;
+  void search(const OverlapPoints& soil, const OverlapPoints& water);
   void setup_grid(const double* positions, std::size_t n);
+  template <class Collect>
+  void scan_cells(sph::Vec<D> x, Collect&& collect) const;
 
-  double support_ = 0.0;
+  double support_ = 0.0, skin_ = 0.0;
   sph::DomainBox<D> box_;
+  bool searched_ = false;
+  std::uint64_t search_count_ = 0;
+  std::size_t soil_count_ = 0;
+  const double* soil_position_ = nullptr;   ///< current soil positions (last update())
+  const double* water_position_ = nullptr;  ///< current water positions (last update())
+  // the last search
+  std::vector<std::int64_t> searched_soil_id_, searched_water_id_;
+  std::vector<double> searched_soil_position_, searched_water_position_;
   sph::CellGrid<D> grid_;
   std::vector<std::int64_t> cell_of_particle_;
   std::vector<std::int32_t> cell_start_;  ///< per cell + 1: first slot of the cell
-  std::vector<std::int32_t> order_;
+  std::vector<std::int32_t> order_;       ///< slot -> soil index
   std::vector<sph::Vec<D>> sorted_position_;
+  std::vector<std::int32_t> candidate_start_;  ///< per water particle + 1
+  std::vector<std::int32_t> candidate_;        ///< soil indices, ascending per water particle
 };
 
 template <int D>
 template <class Visit>
-void CrossNeighbours<D>::for_each_within(sph::Vec<D> x, Visit&& visit) const {
+void CrossNeighbours<D>::for_each_candidate(std::size_t a, Visit&& visit) const {
+  const sph::Vec<D> x_a = Eigen::Map<const sph::Vec<D>>(water_position_ + a * D);
+  for (std::int32_t c = candidate_start_[a]; c < candidate_start_[a + 1]; ++c) {
+    const std::int32_t i = candidate_[c];
+    sph::Vec<D> dx = x_a - Eigen::Map<const sph::Vec<D>>(soil_position_ + std::size_t(i) * D);
+    box_.minimum_image(dx);
+    visit(i, dx, dx.norm());
+  }
+}
+
+template <int D>
+template <class Collect>
+void CrossNeighbours<D>::scan_cells(sph::Vec<D> x, Collect&& collect) const {
   if (order_.empty() || !x.allFinite()) return;
   box_.wrap(x);
   // Per axis the distinct cell coordinates to scan (1 to 3 of them).
@@ -69,7 +120,7 @@ void CrossNeighbours<D>::for_each_within(sph::Vec<D> x, Visit&& visit) const {
         for (std::int64_t j = 0; j < nk; ++j) axis_cells[k][m++] = j;
       }
     } else {
-      // More than one cell outside the grid: no soil particle within the support.
+      // More than one cell outside the grid: no soil particle within reach.
       if (!(s >= -1.0) || !(s < static_cast<double>(nk) + 1.0)) return;
       const std::int64_t c = static_cast<std::int64_t>(std::floor(s));
       for (std::int64_t j = std::max<std::int64_t>(0, c - 1); j <= std::min(nk - 1, c + 1); ++j) {
@@ -79,7 +130,7 @@ void CrossNeighbours<D>::for_each_within(sph::Vec<D> x, Visit&& visit) const {
     if (m == 0) return;
     axis_count[k] = m;
   }
-  const double support2 = support_ * support_;
+  const double reach = support_ + skin_, reach2 = reach * reach;
   int index[D] = {};
   for (;;) {
     std::int64_t cell = 0, stride = 1;
@@ -90,8 +141,7 @@ void CrossNeighbours<D>::for_each_within(sph::Vec<D> x, Visit&& visit) const {
     for (std::int32_t slot = cell_start_[cell]; slot < cell_start_[cell + 1]; ++slot) {
       sph::Vec<D> dx = x - sorted_position_[slot];
       box_.minimum_image(dx);
-      const double r2 = dx.squaredNorm();
-      if (r2 < support2) visit(slot, dx, std::sqrt(r2));
+      if (dx.squaredNorm() < reach2) collect(order_[slot]);
     }
     int k = 0;
     while (k < D && ++index[k] == axis_count[k]) index[k++] = 0;

@@ -1,10 +1,10 @@
 // The pair sums of the soil-water interaction (the formulas are in soil_water_interaction.h),
-// for one dimension and kernel. One distance pass: each water overlap particle scans the soil cell
-// list (cross_neighbours.h) and sums its own acceleration; the soil side of each pair (the force
-// sum F_i = sum_a V_a f_ia W_ia and the saturation s_i = sum_a V_a W_ia) goes into a per-thread
-// buffer, reduced per soil particle afterwards, where a_i = F_i / rho_i^s once s_i is known.
-// Static OpenMP scheduling: the result does not depend on timing (only on the thread count).
-// Every buffer is reused: no allocation in steady state.
+// for one dimension and kernel. One distance pass: each water overlap particle visits its soil
+// neighbours (cross_neighbours.h, a cell list with a Verlet skin) and sums its own acceleration;
+// the soil side of each pair (the force sum F_i = sum_a V_a f_ia W_ia and the saturation s_i =
+// sum_a V_a W_ia) goes into a per-thread buffer, reduced per soil particle afterwards, where a_i =
+// F_i / rho_i^s once s_i is known. Static OpenMP scheduling: the result does not depend on timing
+// (only on the thread count). Every buffer is reused: no allocation in steady state.
 #pragma once
 
 #include <omp.h>
@@ -21,6 +21,7 @@
 #include "coupler/interaction/submerged_density.h"
 #include "proto/coupling_client.h"
 #include "sph/domain_box.h"
+#include "sph/neighbour_list.h"
 #include "sph/vector.h"
 
 namespace porosph::coupler {
@@ -61,12 +62,17 @@ class SoilWaterSums final : public InteractionEngine {
   static constexpr std::int64_t kParallelFrom = 2048;
 
   SoilWaterSums(InteractionParameters parameters, const sph::DomainBox<D>& box)
-      : p_(std::move(parameters)), kernel_(p_.h), box_(box) {}
+      : p_(std::move(parameters)), kernel_(p_.h), box_(box) {
+    grid_.set_skin(sph::kSolverSkinFraction * kernel_.support());
+  }
 
   InteractionSummary compute(const coupling::StepState& water, const coupling::StepState& soil,
                              bool forces, InteractionOutputs& out) override {
-    const std::size_t n_soil = soil.overlap_id.size();
-    grid_.build(soil.overlap_position.data(), n_soil, kernel_.support(), box_);
+    grid_.update(
+        OverlapPoints{soil.overlap_id.data(), soil.overlap_position.data(), soil.overlap_id.size()},
+        OverlapPoints{water.overlap_id.data(), water.overlap_position.data(),
+                      water.overlap_id.size()},
+        kernel_.support(), box_);
     gather_soil(soil, forces);
     InteractionSummary summary;
     summary.evaluated = true;
@@ -82,28 +88,27 @@ class SoilWaterSums final : public InteractionEngine {
   }
 
  private:
-  /// Copies what the pair loop needs of each soil particle into cell order (slots).
+  /// Copies what the pair loop needs of each soil particle (in the soil set's order).
   void gather_soil(const coupling::StepState& soil, bool forces) {
-    const std::size_t n = grid_.size();
-    const std::vector<std::int32_t>& order = grid_.order();
-    slot_velocity_.resize(n);
-    slot_volume_.resize(n);
-    slot_a_.resize(n);
-    slot_b_.resize(n);
-    slot_active_.resize(n);
+    const std::size_t n = grid_.soil_size();
+    soil_velocity_.resize(n);
+    soil_volume_.resize(n);
+    soil_a_.resize(n);
+    soil_b_.resize(n);
+    soil_active_.resize(n);
     const std::int64_t count = static_cast<std::int64_t>(n);
 #pragma omp parallel for schedule(static) if (count >= kParallelFrom) num_threads(threads())
     for (std::int64_t s = 0; s < count; ++s) {
-      const std::size_t i = static_cast<std::size_t>(order[s]);
-      slot_velocity_[s] = Eigen::Map<const Vec>(soil.overlap_velocity.data() + i * D);
-      slot_volume_[s] = soil.overlap_mass[i] / soil.overlap_density[i];
+      const std::size_t i = static_cast<std::size_t>(s);
+      soil_velocity_[s] = Eigen::Map<const Vec>(soil.overlap_velocity.data() + i * D);
+      soil_volume_[s] = soil.overlap_mass[i] / soil.overlap_density[i];
       const SeepageLaw& law = p_.materials[soil.overlap_material[i]].law;
-      slot_active_[s] = forces && law.active();
-      const soil::SeepageCoefficients c = slot_active_[s]
+      soil_active_[s] = forces && law.active();
+      const soil::SeepageCoefficients c = soil_active_[s]
                                               ? law.coefficients(soil.overlap_porosity[i])
                                               : soil::SeepageCoefficients{};
-      slot_a_[s] = p_.unit_weight_water * c.a;
-      slot_b_[s] = p_.unit_weight_water * c.b;
+      soil_a_[s] = p_.unit_weight_water * c.a;
+      soil_b_[s] = p_.unit_weight_water * c.b;
     }
   }
 
@@ -111,9 +116,9 @@ class SoilWaterSums final : public InteractionEngine {
   /// the number of pairs.
   std::size_t water_pass(const coupling::StepState& water, bool forces, InteractionOutputs& out,
                          double& max_a2) {
-    constexpr int kStride = D + 1;  // per soil slot: F_i (D components), then s_i
+    constexpr int kStride = D + 1;  // per soil particle: F_i (D components), then s_i
     const std::int64_t n_water = static_cast<std::int64_t>(water.overlap_id.size());
-    const std::size_t soil_values = grid_.size() * kStride;
+    const std::size_t soil_values = grid_.soil_size() * kStride;
     const int max_threads = threads();
     if (static_cast<int>(partial_.size()) < max_threads) partial_.resize(max_threads);
     if (forces) {
@@ -122,6 +127,7 @@ class SoilWaterSums final : public InteractionEngine {
       out.water_acceleration.clear();
     }
     std::size_t pairs = 0;
+    const double support = kernel_.support();
     double force[D] = {}, magnitude = 0.0, a2_max = 0.0;
     threads_used_ = 1;
 #pragma omp parallel reduction(+ : pairs, force[:D], magnitude) reduction(max : a2_max) \
@@ -134,20 +140,19 @@ class SoilWaterSums final : public InteractionEngine {
       acc.assign(soil_values, 0.0);
 #pragma omp for schedule(static)
       for (std::int64_t a = 0; a < n_water; ++a) {
-        const Vec x_a = Eigen::Map<const Vec>(water.overlap_position.data() + a * D);
         const Vec v_a = Eigen::Map<const Vec>(water.overlap_velocity.data() + a * D);
         const double rho_a = water.overlap_density[a];
         const double volume_a = water.overlap_mass[a] / rho_a;
         Vec sum = Vec::Zero();  // sum_i V_i f_ia W_ia
-        grid_.for_each_within(x_a, [&](std::int32_t s, const Vec&, double r) {
-          const double w = kernel_.w(r);
+        grid_.for_each_candidate(a, [&](std::int32_t s, const Vec&, double r) {
+          const double w = kernel_.w(r);  // 0 beyond the support
           double* soil_sums = acc.data() + static_cast<std::size_t>(s) * kStride;
           soil_sums[D] += volume_a * w;
-          ++pairs;
-          if (!slot_active_[s]) return;
-          const Vec f = seepage_force<D>(slot_a_[s], slot_b_[s], Vec(v_a - slot_velocity_[s]));
+          pairs += r < support;
+          if (!soil_active_[s]) return;
+          const Vec f = seepage_force<D>(soil_a_[s], soil_b_[s], Vec(v_a - soil_velocity_[s]));
           for (int k = 0; k < D; ++k) soil_sums[k] += volume_a * w * f[k];
-          sum += (slot_volume_[s] * w) * f;
+          sum += (soil_volume_[s] * w) * f;
         });
         if (!forces) continue;
         const Vec acceleration = -sum / rho_a;
@@ -169,8 +174,7 @@ class SoilWaterSums final : public InteractionEngine {
   void soil_pass(const coupling::StepState& soil, bool forces, InteractionOutputs& out,
                  double& max_a2) {
     constexpr int kStride = D + 1;
-    const std::int64_t n = static_cast<std::int64_t>(grid_.size());
-    const std::vector<std::int32_t>& order = grid_.order();
+    const std::int64_t n = static_cast<std::int64_t>(grid_.soil_size());
     out.saturation.resize(n);
     if (forces) {
       out.soil_acceleration.resize(n * D);
@@ -187,7 +191,7 @@ class SoilWaterSums final : public InteractionEngine {
         const double* part = partial_[t].data() + s * kStride;
         for (int k = 0; k < kStride; ++k) sums[k] += part[k];
       }
-      const std::size_t i = static_cast<std::size_t>(order[s]);
+      const std::size_t i = static_cast<std::size_t>(s);
       out.saturation[i] = sums[D];
       if (!forces) continue;
       const SoilMaterialTerms& material = p_.materials[soil.overlap_material[i]];
@@ -216,10 +220,10 @@ class SoilWaterSums final : public InteractionEngine {
   Kernel kernel_;
   sph::DomainBox<D> box_;
   CrossNeighbours<D> grid_;
-  std::vector<Vec> slot_velocity_;
-  std::vector<double> slot_volume_, slot_a_, slot_b_;
-  std::vector<unsigned char> slot_active_;
-  std::vector<std::vector<double>> partial_;  ///< per thread: (F_i, s_i) per soil slot
+  std::vector<Vec> soil_velocity_;
+  std::vector<double> soil_volume_, soil_a_, soil_b_;
+  std::vector<unsigned char> soil_active_;
+  std::vector<std::vector<double>> partial_;  ///< per thread: (F_i, s_i) per soil particle
   int threads_used_ = 1;
 };
 
