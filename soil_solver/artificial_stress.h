@@ -51,7 +51,7 @@ template <int D>
 inline sph::Vec<D> artificial_stress_acceleration(double m_j, const Eigen::Matrix3d& r_i,
                                                   const Eigen::Matrix3d& r_j, double f_n,
                                                   const sph::Vec<D>& grad_w_ij) {
-  return (m_j * f_n) * (in_plane_block<D>(r_i + r_j) * grad_w_ij);
+  return (m_j * f_n) * ((in_plane_block<D>(r_i) + in_plane_block<D>(r_j)) * grad_w_ij);
 }
 
 }  // namespace porosph::soil

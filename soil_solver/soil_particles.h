@@ -27,6 +27,8 @@ struct SoilParticles {
   std::vector<Tensor> stress;  ///< sigma, tension positive, plane strain in 2D [Pa]
   std::vector<Tensor> velocity_gradient;  ///< L = dv/dx of this step (eq. 7-8), 3x3 embedded
   std::vector<Tensor> artificial_stress;  ///< R of Gray et al. 2001 (zero when off)
+  /// 1 where R != 0 (some principal stress in tension): pairs of two 0 particles skip the term.
+  std::vector<std::uint8_t> in_tension;
   std::vector<double> density, density_rate, reference_density, mass;
   std::vector<double> porosity;        ///< eq. 20, from the density
   std::vector<double> plastic_strain;  ///< accumulated plastic multiplier lambda [-]
@@ -48,7 +50,7 @@ struct SoilParticles {
     fn(displacement), fn(wall_normal), fn(stress), fn(velocity_gradient), fn(artificial_stress),
         fn(density);
     fn(density_rate), fn(reference_density), fn(mass), fn(porosity), fn(plastic_strain);
-    fn(saturation), fn(weight_ratio), fn(wet);
+    fn(saturation), fn(weight_ratio), fn(wet), fn(in_tension);
     fn(remove_at), fn(id), fn(material), fn(fixed), fn(no_slip);
   }
 

@@ -30,6 +30,7 @@ SoilRateSummary acceleration_loop(const sph::NeighbourList<D>& nl, const Kernel&
     const double rho_i = P.density[i];
     const double rho_weight_i = rho_i * P.weight_ratio[i];  // rho^s of eq. 16 when submerged
     const Eigen::Matrix3d& sigma_i = P.stress[i];
+    const std::uint8_t tension_i = kArtificialStress ? P.in_tension[i] : 0;
     Vec acc = Vec::Zero();
     auto pair_terms = [&](const auto& pair, const Vec& v_j) {
       const std::int32_t j = pair.b;
@@ -37,9 +38,11 @@ SoilRateSummary acceleration_loop(const sph::NeighbourList<D>& nl, const Kernel&
       acc += stress_divergence_acceleration<D>(P.mass[j], sigma_i, P.stress[j], rho_weight_i,
                                                P.density[j], grad_w);
       if constexpr (kArtificialStress) {
-        const double f_n = artificial_stress_factor(kernel.w(pair.r), w_dp, as_exponent);
-        acc += artificial_stress_acceleration<D>(P.mass[j], P.artificial_stress[i],
-                                                 P.artificial_stress[j], f_n, grad_w);
+        if (tension_i | P.in_tension[j]) {  // else R_i + R_j = 0: no term (and no pow)
+          const double f_n = artificial_stress_factor(kernel.w(pair.r), w_dp, as_exponent);
+          acc += artificial_stress_acceleration<D>(P.mass[j], P.artificial_stress[i],
+                                                   P.artificial_stress[j], f_n, grad_w);
+        }
       }
       if constexpr (kViscosity) {
         acc += av.acceleration<D>(P.mass[j], Vec(v_i - v_j), pair.x_ab, c, c, rho_i, P.density[j],
@@ -79,6 +82,7 @@ void update_artificial_stress(const SoilParams<D>& params, SoilParticles<D>& P) 
     } else {
       P.artificial_stress[i].setZero();
     }
+    P.in_tension[i] = (P.artificial_stress[i].array() != 0.0).any() ? 1 : 0;
   }
 }
 

@@ -18,7 +18,9 @@ template <int D>
 inline sph::Vec<D> stress_divergence_acceleration(double m_j, const Eigen::Matrix3d& sigma_i,
                                                   const Eigen::Matrix3d& sigma_j, double rho_i,
                                                   double rho_j, const sph::Vec<D>& grad_w_ij) {
-  return (m_j / (rho_i * rho_j)) * (in_plane_block<D>(sigma_i + sigma_j) * grad_w_ij);
+  // The blocks first: only D x D additions (a 3x3 sum would be evaluated in full).
+  return (m_j / (rho_i * rho_j)) *
+         ((in_plane_block<D>(sigma_i) + in_plane_block<D>(sigma_j)) * grad_w_ij);
 }
 
 }  // namespace porosph::soil
