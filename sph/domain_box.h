@@ -19,6 +19,11 @@ struct DomainBox {
   Vec<D> max = Vec<D>::Constant(std::numeric_limits<double>::infinity());
   std::array<bool, D> periodic{};
 
+  /// Same bounds and periodic axes (a neighbour search laid out for one is valid for the other).
+  bool same_as(const DomainBox& other) const {
+    return periodic == other.periodic && min == other.min && max == other.max;
+  }
+
   /// Box from the scene (empty min/max: unbounded); periodic flags from scene.run.periodic.
   /// Throws std::invalid_argument if a periodic axis is unbounded or shorter than 2 `support`
   /// (the minimum image must be unique within the kernel support).

@@ -50,11 +50,7 @@ template <int D>
 bool NeighbourList<D>::needs_search(const Vec<D>* x, std::size_t n, std::size_t n_free,
                                     double support, const DomainBox<D>& box) const {
   if (!searched_ || n != n_ || std::min(n_free, n) != n_free_ || support != support_) return true;
-  for (int k = 0; k < D; ++k) {
-    if (box.periodic[k] != box_.periodic[k] || box.min[k] != box_.min[k] ||
-        box.max[k] != box_.max[k])
-      return true;
-  }
+  if (!box.same_as(box_)) return true;
   // Any particle farther than skin/2 from where it was searched (a NaN counts as moved). With
   // skin 0 every motion triggers a search. Periodic axes: the wrapped position jumps by a box
   // length when a particle crosses, which counts as moved (a search, never a missed pair).

@@ -43,11 +43,7 @@ template <int D>
 bool CrossNeighbours<D>::needs_search(const OverlapPoints& soil, const OverlapPoints& water,
                                       double support, const sph::DomainBox<D>& box) const {
   if (!searched_ || support != support_) return true;
-  for (int k = 0; k < D; ++k) {
-    if (box.periodic[k] != box_.periodic[k] || box.min[k] != box_.min[k] ||
-        box.max[k] != box_.max[k])
-      return true;
-  }
+  if (!box.same_as(box_)) return true;
   const double limit2 = 0.25 * skin_ * skin_;
   return !same_and_close<D>(soil, searched_soil_id_, searched_soil_position_, limit2) ||
          !same_and_close<D>(water, searched_water_id_, searched_water_position_, limit2);
