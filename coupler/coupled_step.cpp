@@ -49,6 +49,7 @@ CoupledStepLoop::CoupledStepLoop(const scene::Scene& scene, SolverHub& hub, RunR
     const int solvers = static_cast<int>(phases_.size());
     interaction_ = std::make_unique<SoilWaterInteraction>(scene, std::max(1, cores - solvers));
     record_.interaction.active = true;
+    record_.interaction.terms = interaction_->terms();
   }
   const std::string csv = out_dir + "/timeseries.csv";
   if (resumed) {  // rows after the checkpoint (a killed run wrote them) go
@@ -149,6 +150,7 @@ void CoupledStepLoop::absorb_state(const std::string& phase, const coupling::Ste
   PhaseRecord& phase_record = record_.phases[phase];
   if (record_.steps == 0) phase_record.initial = d;
   phase_record.last = d;
+  if (!d.terms.empty()) phase_record.terms = d.terms;  // sent with the first state only
   phase_record.physics_seconds += d.physics_seconds;
   for (const auto& observable : scene_.observables) {
     if (observable.phase != phase) continue;

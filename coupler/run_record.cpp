@@ -76,6 +76,7 @@ json phase_json(const PhaseRecord& p) {
   out["initial"] = diagnostics_json(p.initial);
   out["final"] = diagnostics_json(p.last);
   out["snapshots"] = p.snapshots.size();
+  out["terms"] = p.terms;
   out["wall_seconds"] = {
       {"total", number(p.timing.wall_seconds)},
       {"physics", number(p.finished ? p.timing.physics_seconds : p.physics_seconds)},
@@ -94,7 +95,8 @@ json interaction_json(const InteractionRecord& r) {
             {"last", r.pairs_last}}},
           {"overlap_max", {{"water", r.water_overlap_max}, {"soil", r.soil_overlap_max}}},
           {"dt_limit_min", number(r.dt_limit_min)},  // null: the interaction never limited dt
-          {"seconds", number(r.seconds)}};
+          {"seconds", number(r.seconds)},
+          {"terms", r.terms}};
 }
 
 }  // namespace

@@ -40,6 +40,7 @@ struct InteractionRecord {
   std::uint64_t water_overlap_max = 0, soil_overlap_max = 0;  ///< largest overlap sets
   double seconds = 0;  ///< coupler wall time in the interaction (part of coupler_seconds)
   double dt_limit_min = std::numeric_limits<double>::infinity();  ///< smallest eq. 21 limit [s]
+  std::vector<std::string> terms;  ///< the interaction terms of the scene (run.json)
 
   /// Books one step: `evaluated` false when an overlap set was empty (pairs = 0).
   void add_step(bool evaluated, std::uint64_t pairs, std::uint64_t water_overlap,
@@ -56,8 +57,9 @@ struct PhaseRecord {
   coupling::Diagnostics last;
   std::vector<io::XdmfSnapshot> snapshots;
   coupling::Timing timing;
-  bool finished = false;       ///< said Goodbye
-  double physics_seconds = 0;  ///< summed from the per-step reports
+  std::vector<std::string> terms;  ///< the physics terms the solver reported (run.json)
+  bool finished = false;           ///< said Goodbye
+  double physics_seconds = 0;      ///< summed from the per-step reports
 };
 
 struct RunRecord {

@@ -62,6 +62,22 @@ FluidSolver<D>::FluidSolver(const scene::Scene& s)
 }
 
 template <int D>
+std::vector<std::string> FluidSolver<D>::active_terms() const {
+  std::vector<std::string> terms = {"continuity", "pressure_gradient", "gravity"};
+  if (params_.morris_on()) terms.push_back("morris_viscosity");
+  if (params_.artificial_on()) terms.push_back("artificial_viscosity");
+  if (params_.diffusion_on()) terms.push_back("density_diffusion");
+  if (particles_.wall_count() > 0)
+    terms.push_back(params_.no_slip ? "walls_no_slip" : "walls_free_slip");
+  if (params_.density_filter_every > 0) terms.push_back("shepard_density_filter");
+  if (zones_.inflow_count() > 0) terms.push_back("inflow");
+  if (zones_.has_outflows()) terms.push_back("outflow");
+  if (box_.any_periodic()) terms.push_back("periodic");
+  if (damping_.duration() > 0.0) terms.push_back("damping_stage_freeze");
+  return terms;
+}
+
+template <int D>
 void FluidSolver<D>::build_neighbours() {
   neighbours_.build(particles_.position.data(), particles_.size(), particles_.n_free,
                     2.0 * params_.h, box_);

@@ -60,6 +60,9 @@ class FluidSolver {
   /// position, velocity, density, pressure, id (i64), fixed (u8) of every particle incl. walls;
   /// the views stay valid until the next compute_rates/advance.
   std::vector<io::FieldView> snapshot_fields() const;
+  /// The physics terms this solver evaluates for its scene (run.json phases.water.terms): the
+  /// same predicates that select the compiled pair loop (fluid_rates.cpp) and the optional stages.
+  std::vector<std::string> active_terms() const;
 
   /// Stores the whole state the integrator carries from step to step (every particle array, the
   /// counters, time, step, next id, damping release, pending wall removal; fluid_checkpoint.cpp).

@@ -49,6 +49,8 @@ struct Diagnostics {
   double physics_seconds = 0;
   double inflow_mass = 0, outflow_mass = 0;  ///< since t = 0: born in inflow zones, removed
   double neighbours_per_particle = 0;        ///< mean neighbour count of a free particle
+  /// The physics terms the solver evaluates (first state only; empty afterwards).
+  std::vector<std::string> terms;
 };
 
 /// One solver's report after computing its accelerations for the current state.

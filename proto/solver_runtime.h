@@ -41,6 +41,13 @@ struct has_set_saturation<Solver, std::void_t<decltype(std::declval<Solver&>().s
                                       std::declval<const std::vector<double>&>()))>>
     : std::true_type {};
 
+/// True for a solver with active_terms() (the names reported with the first state).
+template <class Solver, class = void>
+struct has_active_terms : std::false_type {};
+template <class Solver>
+struct has_active_terms<Solver, std::void_t<decltype(std::declval<const Solver&>().active_terms())>>
+    : std::true_type {};
+
 /// The phase's snapshot file OUT/<file_name>: created afresh, or on resume reopened without the
 /// snapshots written after the checkpoint (index >= Setup.resume_output_index).
 inline std::unique_ptr<io::SnapshotWriter> open_snapshot_writer(const SetupData& setup,
@@ -122,6 +129,7 @@ int run_solver_loop(CouplingClient& client, Solver& solver, io::SnapshotWriter& 
     return 1;
   }
   std::uint32_t checkpoint_written = 0;  // confirmed with the next state
+  if constexpr (has_active_terms<Solver>::value) state.diagnostics.terms = solver.active_terms();
   for (;;) {
     if (rates_pending && !timed(state_is_finite)) return 1;
     timed([&] {
@@ -133,6 +141,7 @@ int run_solver_loop(CouplingClient& client, Solver& solver, io::SnapshotWriter& 
     state.checkpoint_written = checkpoint_written;
     checkpoint_written = 0;
     client.send_state(state);
+    state.diagnostics.terms.clear();  // the first state carries them
     // Overlaps with the coupler's interaction and the other solver's work.
     if (rates_pending && !timed(rates_are_finite)) return 1;
 

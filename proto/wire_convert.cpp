@@ -31,6 +31,8 @@ void to_wire(const coupling::Diagnostics& in, Diagnostics& out) {
   out.set_outflow_mass(in.outflow_mass);
   out.set_neighbours_per_particle(in.neighbours_per_particle);
   assign(out.mutable_momentum(), in.momentum);
+  out.mutable_terms()->Clear();
+  for (const std::string& term : in.terms) out.add_terms(term);
   auto& observables = *out.mutable_observables();
   // Update in place (no node churn when the names stay the same), then drop stale names.
   for (const auto& [name, value] : in.observables) observables[name] = value;
@@ -53,6 +55,7 @@ void from_wire(const Diagnostics& in, coupling::Diagnostics& out) {
   out.outflow_mass = in.outflow_mass();
   out.neighbours_per_particle = in.neighbours_per_particle();
   assign(out.momentum, in.momentum());
+  out.terms.assign(in.terms().begin(), in.terms().end());
   for (const auto& [name, value] : in.observables()) {
     auto it = out.observables.find(name);
     if (it != out.observables.end()) {

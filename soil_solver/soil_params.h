@@ -52,6 +52,12 @@ struct SoilParams {
   double wet_saturation = 0.1;        ///< water fraction from which a particle is wet
   std::vector<SoilMaterialConstants> materials;
 
+  bool viscosity_on() const { return viscosity.alpha > 0.0 || viscosity.beta > 0.0; }
+  bool any_wet_cohesion_loss() const {
+    for (const auto& m : materials)
+      if (m.wet_cohesion_loss) return true;
+    return false;
+  }
   bool any_artificial_stress() const {
     for (const auto& m : materials)
       if (m.artificial_stress) return true;

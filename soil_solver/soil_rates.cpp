@@ -89,8 +89,8 @@ void update_artificial_stress(const SoilParams<D>& params, SoilParticles<D>& P) 
 template <int D, class Kernel>
 SoilRateSummary compute_soil_rates(const sph::NeighbourList<D>& neighbours, const Kernel& kernel,
                                    const SoilParams<D>& params, SoilParticles<D>& P) {
-  const bool viscosity = params.viscosity.alpha > 0.0 || params.viscosity.beta > 0.0;
-  if (viscosity) return dispatch_artificial_stress<D, Kernel, true>(neighbours, kernel, params, P);
+  if (params.viscosity_on())
+    return dispatch_artificial_stress<D, Kernel, true>(neighbours, kernel, params, P);
   return dispatch_artificial_stress<D, Kernel, false>(neighbours, kernel, params, P);
 }
 

@@ -119,6 +119,21 @@ SoilSolver<D>::SoilSolver(const scene::Scene& s)
 }
 
 template <int D>
+std::vector<std::string> SoilSolver<D>::active_terms() const {
+  std::vector<std::string> terms = {"stress_divergence", "gravity", "velocity_gradient",
+                                    "jaumann_stress_rate", "drucker_prager_return"};
+  if (params_.viscosity_on()) terms.push_back("artificial_viscosity");
+  if (params_.any_artificial_stress()) terms.push_back("artificial_stress");
+  if (params_.stress_filter_every > 0) terms.push_back("shepard_stress_filter");
+  if (params_.any_wet_cohesion_loss()) terms.push_back("wet_cohesion_loss");
+  if (particles_.n_free < particles_.size()) terms.push_back("walls");
+  if (params_.geostatic_initial) terms.push_back("geostatic_initial_stress");
+  if (params_.damping_duration > 0.0) terms.push_back("damping_stage");
+  if (box_.any_periodic()) terms.push_back("periodic");
+  return terms;
+}
+
+template <int D>
 void SoilSolver<D>::build_neighbours() {
   neighbours_.build(particles_.position.data(), particles_.size(), particles_.n_free,
                     2.0 * params_.h, box_);

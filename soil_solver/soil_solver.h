@@ -69,6 +69,9 @@ class SoilSolver {
   /// plastic_strain, displacement, saturation, id, material, fixed; valid until the next
   /// compute_rates/advance.
   std::vector<io::FieldView> snapshot_fields() const;
+  /// The physics terms this solver evaluates for its scene (run.json phases.soil.terms): the same
+  /// predicates that select the compiled pair loops (soil_rates.cpp) and the optional stages.
+  std::vector<std::string> active_terms() const;
 
   /// Stores the whole state the integrator carries from step to step (every particle array incl.
   /// stress, porosity, plastic strain, displacement, saturation and wet flags; the counters, time,

@@ -45,6 +45,12 @@ struct InteractionSummary {
   double dt_limit = std::numeric_limits<double>::infinity();
 };
 
+/// The terms the interaction evaluates for these soil materials: "saturation" and
+/// "submerged_density" always; "seepage_force" and "seepage_<law>" for each law in use (eq.
+/// 13-15), "variable_permeability" (eq. 20) where a material with a law has it, "wet_marking"
+/// (wet_cohesion_loss materials), "fixed_bed".
+std::vector<std::string> interaction_terms(const scene::SoilPhase& soil);
+
 class SoilWaterInteraction {
  public:
   /// Reads h, the kernel, run.c_a, gravity, the periodic domain, the water's rho0 and viscosity
@@ -70,11 +76,14 @@ class SoilWaterInteraction {
   const std::vector<double>& water_acceleration() const { return out_.water_acceleration; }
   const std::vector<double>& soil_acceleration() const { return out_.soil_acceleration; }
   const std::vector<double>& saturation() const { return out_.saturation; }
+  /// The interaction terms of the scene (run.json interaction.terms; interaction_terms()).
+  const std::vector<std::string>& terms() const { return terms_; }
 
  private:
   void check_sizes(const coupling::StepState& state, const char* phase, bool soil) const;
 
   std::unique_ptr<InteractionEngine> engine_;
+  std::vector<std::string> terms_;
   int dimension_ = 2;
   double damping_duration_ = 0.0;
   std::size_t material_count_ = 0;
