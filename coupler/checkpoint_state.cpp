@@ -167,6 +167,7 @@ std::string coupler_state_json(const RunRecord& r, const LoopState& loop) {
                       {"dt_min", exact(r.dt_min)},
                       {"dt_max", exact(r.dt_max)},
                       {"dt_sum", exact(r.dt_sum)},
+                      {"dt_over_limit_max", exact(r.dt_over_limit_max)},
                       {"phases", phases},
                       {"ledger",
                        {{"impulse_to_water", exact_vector(r.ledger.impulse_to_water)},
@@ -204,6 +205,7 @@ void restore_coupler_state(const std::string& text, const std::string& source, R
     r.dt_min = exact_of(j.at("dt_min"));
     r.dt_max = exact_of(j.at("dt_max"));
     r.dt_sum = exact_of(j.at("dt_sum"));
+    if (j.contains("dt_over_limit_max")) r.dt_over_limit_max = exact_of(j.at("dt_over_limit_max"));
     for (const auto& [name, phase] : j.at("phases").items()) restore_phase(phase, r.phases[name]);
     const json& ledger = j.at("ledger");
     r.ledger.impulse_to_water = exact_vector_of(ledger.at("impulse_to_water"));

@@ -200,6 +200,7 @@ void CoupledStepLoop::send_commands(double dt, bool write_output, std::uint32_t 
     // A scene with a single phase exchanges no interaction (DESIGN.md section 1). The vectors
     // are assigned in place: their storage is reused from step to step.
     command.interaction_acceleration.clear();
+    command.interaction_rate.clear();
     command.saturation.clear();
     command.other_region_min.clear();
     command.other_region_max.clear();
@@ -208,6 +209,9 @@ void CoupledStepLoop::send_commands(double dt, bool write_output, std::uint32_t 
       const std::vector<double>& acceleration =
           soil ? interaction_->soil_acceleration() : interaction_->water_acceleration();
       command.interaction_acceleration.assign(acceleration.begin(), acceleration.end());
+      const std::vector<double>& rate =
+          soil ? interaction_->soil_rate() : interaction_->water_rate();
+      command.interaction_rate.assign(rate.begin(), rate.end());
       if (soil) {
         command.saturation.assign(interaction_->saturation().begin(),
                                   interaction_->saturation().end());
@@ -275,9 +279,8 @@ void CoupledStepLoop::run(ProgressLine& progress) {
     // Eq. 21 with the interaction of this step; the solvers' own dt_force already includes the
     // interaction of the previous step.
     const double dt_interaction = compute_interaction();
-    double dt = 0.0;
+    double dt = 0.0, dt_min = dt_interaction;
     if (!stop) {
-      double dt_min = dt_interaction;
       for (const auto& [phase, state] : states_) dt_min = std::min(dt_min, state.dt_limit);
       dt = std::min(controller_.next(dt_min), end_time - record_.time);
     }
@@ -307,7 +310,7 @@ void CoupledStepLoop::run(ProgressLine& progress) {
     if (stop) break;
     record_.time += dt;
     record_.steps += 1;
-    record_.record_dt(dt);
+    record_.record_dt(dt, dt_min);
     if (checkpoint) {  // the state at the new step boundary, written once the solvers confirm
       loop_.controller_dt = controller_.current();
       checkpoints_.hold(coupler_state_json(record_, loop_), record_.time, record_.steps);

@@ -134,7 +134,8 @@ double ConservationLedger::relative_imbalance() const {
   return impulse_magnitude_sum > 0 ? norm(total) / impulse_magnitude_sum : 0.0;
 }
 
-void RunRecord::record_dt(double dt) {
+void RunRecord::record_dt(double dt, double dt_limit) {
+  if (dt_limit > 0.0) dt_over_limit_max = std::max(dt_over_limit_max, dt / dt_limit);
   dt_min = std::min(dt_min, dt);
   dt_max = std::max(dt_max, dt);
   dt_sum += dt;
@@ -153,7 +154,8 @@ void write_run_json(const std::string& path, const RunRecord& r) {
   const double steps = static_cast<double>(std::max<std::uint64_t>(r.steps, 1));
   out["dt"] = {{"min", number(r.steps ? r.dt_min : 0.0)},
                {"mean", number(r.dt_sum / steps)},
-               {"max", number(r.dt_max)}};
+               {"max", number(r.dt_max)},
+               {"max_over_limit", number(r.dt_over_limit_max)}};
   json wall = {{"total", number(r.wall_seconds)}, {"coupler", number(r.coupler_seconds)}};
   for (const auto& [name, phase] : r.phases) wall[name] = phase_json(phase)["wall_seconds"];
   out["wall_seconds"] = wall;

@@ -77,6 +77,7 @@ struct RunRecord {
   double dt_min = std::numeric_limits<double>::infinity();
   double dt_max = 0;
   double dt_sum = 0;
+  double dt_over_limit_max = 0;  ///< max over the steps of dt / (smallest limit): <= 1
   std::map<std::string, PhaseRecord> phases;
   ConservationLedger ledger;
   InteractionRecord interaction;
@@ -87,7 +88,9 @@ struct RunRecord {
   double checkpoint_time = 0;
   std::uint64_t checkpoint_step = 0;
 
-  void record_dt(double dt);
+  /// Books one step's dt and the smallest of that step's limits (solvers' CFL, viscous, eq. 21
+  /// and the interaction's eq. 21).
+  void record_dt(double dt, double dt_limit);
 };
 
 /// Writes run.json (atomically: temp file + rename).

@@ -15,10 +15,11 @@ struct FluidParticles {
   std::size_t n_free = 0;
 
   std::vector<Vec> position, velocity;
-  std::vector<Vec> velocity_previous;  ///< v^{n-1} of the modified Verlet scheme
-  std::vector<Vec> acceleration;       ///< internal dv/dt of this step (incl. gravity)
-  std::vector<Vec> interaction;        ///< acceleration added by the coupler (last step)
-  std::vector<Vec> wall_velocity;      ///< walls: velocity seen by viscous terms (Adami 2012)
+  std::vector<Vec> velocity_previous;    ///< v^{n-1} of the modified Verlet scheme
+  std::vector<Vec> acceleration;         ///< internal dv/dt of this step (incl. gravity)
+  std::vector<Vec> interaction;          ///< acceleration added by the coupler (last step)
+  std::vector<double> interaction_rate;  ///< its drag rate lambda [1/s] (implicit drag; 0: off)
+  std::vector<Vec> wall_velocity;        ///< walls: velocity seen by viscous terms (Adami 2012)
   std::vector<double> density, density_previous, density_rate;
   std::vector<double> pressure, sound_speed, mass;
   /// 1 / rho and m / rho of every particle, derived from density and mass at the start of each
@@ -94,7 +95,7 @@ struct FluidParticles {
     fn(p.position...), fn(p.velocity...), fn(p.velocity_previous...), fn(p.acceleration...);
     fn(p.interaction...), fn(p.wall_velocity...), fn(p.density...), fn(p.density_previous...);
     fn(p.density_rate...), fn(p.pressure...), fn(p.sound_speed...), fn(p.mass...);
-    fn(p.inverse_density...), fn(p.volume...);
+    fn(p.inverse_density...), fn(p.volume...), fn(p.interaction_rate...);
     fn(p.remove_at...), fn(p.id...), fn(p.fixed...), fn(p.zone...);
   }
 

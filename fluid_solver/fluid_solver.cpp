@@ -219,6 +219,20 @@ void FluidSolver<D>::add_interaction(const std::vector<double>& acceleration) {
 }
 
 template <int D>
+void FluidSolver<D>::set_interaction_rate(const std::vector<double>& rate) {
+  if (!rate.empty() && rate.size() != overlap_index_.size()) {
+    throw std::invalid_argument("set_interaction_rate: expected " +
+                                std::to_string(overlap_index_.size()) + " values, got " +
+                                std::to_string(rate.size()));
+  }
+  std::fill(particles_.interaction_rate.begin(), particles_.interaction_rate.end(), 0.0);
+  for (std::size_t i = 0; i < rate.size(); ++i) {
+    const std::size_t index = static_cast<std::size_t>(overlap_index_[i]);
+    particles_.interaction_rate[index] = rate[i];
+  }
+}
+
+template <int D>
 void FluidSolver<D>::advance(double dt) {
   StopWatch watch(physics_seconds_);
   FluidParticles<D>& P = particles_;
@@ -251,8 +265,9 @@ void FluidSolver<D>::integrate(double dt) {
     if (P.zone[a] >= 0) {  // prescribed velocity (flow_zones.h)
       past_zone += zones_.move(P.zone[a], P.position[a], P.velocity[a], P.velocity_previous[a], dt);
     } else {
-      sph::verlet_step<D>(P.position[a], P.velocity[a], P.velocity_previous[a],
-                          P.acceleration[a] + P.interaction[a], dt, euler);
+      sph::verlet_step_implicit_drag<D>(P.position[a], P.velocity[a], P.velocity_previous[a],
+                                        P.acceleration[a] + P.interaction[a], P.interaction_rate[a],
+                                        dt, euler);
     }
     sph::verlet_step_scalar(P.density[a], P.density_previous[a], P.density_rate[a], dt, euler);
     box_.wrap(P.position[a]);

@@ -47,6 +47,10 @@ class FluidSolver {
   /// Adds accelerations (n*D, row-major) to the overlap particles of the last fill_state, same
   /// order. Throws std::invalid_argument on a size mismatch.
   void add_interaction(const std::vector<double>& acceleration);
+  /// The drag rate lambda per overlap particle (implicit drag, sph/integrator.h), in the order of
+  /// the last state's overlap set; empty: none (explicit). Throws std::invalid_argument on a size
+  /// mismatch.
+  void set_interaction_rate(const std::vector<double>& rate);
   /// Modified Verlet step of the free water; prescribed motion of the inflow zones' particles and
   /// renewal of the zones (flow_zones.h); periodic wrap; removal of the water that left the domain
   /// or entered an outflow zone (counted in removed_count); none of this while the damping stage

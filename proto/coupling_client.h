@@ -89,7 +89,10 @@ struct StepCommand {
   std::uint32_t output_index = 0;
   bool stop = false;
   std::vector<double> interaction_acceleration;  ///< per overlap particle, n*D (may be empty)
-  std::vector<double> saturation;                ///< soil only
+  /// Per overlap particle: lambda = -d(interaction acceleration)/d(own velocity) [1/s] (empty:
+  /// explicit drag).
+  std::vector<double> interaction_rate;
+  std::vector<double> saturation;  ///< soil only
   std::vector<double> other_region_min, other_region_max;
   /// After advancing, write checkpoint `checkpoint_index` (>= 1) and confirm it in the next state.
   bool write_checkpoint = false;

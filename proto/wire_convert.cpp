@@ -197,6 +197,7 @@ void to_wire(const coupling::StepCommand& in, StepCommand& out) {
   out.set_output_index(in.output_index);
   out.set_stop(in.stop);
   assign(out.mutable_interaction_acceleration(), in.interaction_acceleration);
+  assign(out.mutable_interaction_rate(), in.interaction_rate);
   assign(out.mutable_saturation(), in.saturation);
   assign(out.mutable_other_region_min(), in.other_region_min);
   assign(out.mutable_other_region_max(), in.other_region_max);
@@ -212,6 +213,7 @@ void from_wire(const StepCommand& in, coupling::StepCommand& out) {
   out.output_index = in.output_index();
   out.stop = in.stop();
   assign(out.interaction_acceleration, in.interaction_acceleration());
+  assign(out.interaction_rate, in.interaction_rate());
   assign(out.saturation, in.saturation());
   assign(out.other_region_min, in.other_region_min());
   assign(out.other_region_max, in.other_region_max());

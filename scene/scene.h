@@ -83,6 +83,7 @@ struct OutflowZone {
 struct CouplingSettings {
   double submerged_saturation = 0.8;  ///< water fraction from which soil is submerged
   double wet_saturation = 0.1;        ///< water fraction from which soil is wet
+  bool implicit_drag = true;          ///< the drag's rate goes to the solvers (implicit drag)
 };
 
 /// Water phase (table [water]).

@@ -72,6 +72,13 @@ void add_coupling(SceneSchema& s) {
                             "sum_a V_a W_ia reaches this value is submerged: its weight and the "
                             "seepage term use the submerged density (saturated - water); below it "
                             "the particle keeps its total unit weight."));
+  s.keys.push_back(
+      Key("coupling.implicit_drag", T::Bool)
+          .fallback("true")
+          .doc("Take the seepage drag implicitly in each particle's own velocity "
+               "(the coupler sends its rate; sph/integrator.h): stable when the drag's "
+               "relaxation time is far below dt (low permeability); false: the "
+               "paper's explicit drag."));
   s.keys.push_back(Key("coupling.wet_saturation", T::Float)
                        .fallback("0.1")
                        .above(0)
@@ -152,6 +159,7 @@ CouplingSettings build_coupling(const toml::table& root) {
   if (const toml::table* t = root.get_as<toml::table>("coupling")) {
     c.submerged_saturation = *(*t)["submerged_saturation"].value<double>();
     c.wet_saturation = *(*t)["wet_saturation"].value<double>();
+    c.implicit_drag = *(*t)["implicit_drag"].value<bool>();
   }
   return c;
 }

@@ -18,10 +18,11 @@ struct SoilParticles {
   std::size_t n_free = 0;
 
   std::vector<Vec> position, velocity;
-  std::vector<Vec> acceleration;   ///< internal dv/dt of this step (incl. gravity)
-  std::vector<Vec> interaction;    ///< acceleration added by the coupler (last step)
-  std::vector<Vec> wall_velocity;  ///< fixed: velocity seen by the viscous terms (mirrored)
-  std::vector<Vec> displacement;   ///< integral of v dt since t = 0 (periodic-safe)
+  std::vector<Vec> acceleration;         ///< internal dv/dt of this step (incl. gravity)
+  std::vector<Vec> interaction;          ///< acceleration added by the coupler (last step)
+  std::vector<double> interaction_rate;  ///< its drag rate lambda [1/s] (implicit drag; 0: off)
+  std::vector<Vec> wall_velocity;        ///< fixed: velocity seen by the viscous terms (mirrored)
+  std::vector<Vec> displacement;         ///< integral of v dt since t = 0 (periodic-safe)
   std::vector<Vec>
       wall_normal;             ///< fixed: geometric normal (wall_normals.h; 0 corner, NaN unknown)
   std::vector<Tensor> stress;  ///< sigma, tension positive, plane strain in 2D [Pa]
@@ -50,7 +51,7 @@ struct SoilParticles {
     fn(displacement), fn(wall_normal), fn(stress), fn(velocity_gradient), fn(artificial_stress),
         fn(density);
     fn(density_rate), fn(reference_density), fn(mass), fn(porosity), fn(plastic_strain);
-    fn(saturation), fn(weight_ratio), fn(wet), fn(in_tension);
+    fn(saturation), fn(weight_ratio), fn(wet), fn(in_tension), fn(interaction_rate);
     fn(remove_at), fn(id), fn(material), fn(fixed), fn(no_slip);
   }
 

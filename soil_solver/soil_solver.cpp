@@ -255,6 +255,21 @@ void SoilSolver<D>::set_saturation(const std::vector<double>& saturation) {
 }
 
 template <int D>
+void SoilSolver<D>::set_interaction_rate(const std::vector<double>& rate) {
+  if (!rate.empty() && rate.size() != overlap_index_.size()) {
+    throw std::invalid_argument("set_interaction_rate: expected " +
+                                std::to_string(overlap_index_.size()) + " values, got " +
+                                std::to_string(rate.size()));
+  }
+  std::fill(particles_.interaction_rate.begin(), particles_.interaction_rate.end(), 0.0);
+  for (std::size_t i = 0; i < rate.size(); ++i) {
+    const std::size_t index = static_cast<std::size_t>(overlap_index_[i]);
+    if (index >= particles_.n_free) continue;
+    particles_.interaction_rate[index] = rate[i];
+  }
+}
+
+template <int D>
 void SoilSolver<D>::advance(double dt) {
   SoilParticles<D>& P = particles_;
   if (!interaction_fresh_ && interaction_nonzero_) {
@@ -272,7 +287,8 @@ void SoilSolver<D>::advance(double dt) {
       const auto& m = params_.materials[P.material[i]];
       a -= params_.damping_coefficient * std::sqrt(m.young * inv_h2 / P.density[i]) * P.velocity[i];
     }
-    P.velocity[i] += dt * a;
+    // Implicit drag (rate lambda from the coupler, sph/integrator.h): v += dt a / (1 + lambda dt).
+    P.velocity[i] += (dt / (1.0 + dt * P.interaction_rate[i])) * a;
   }
   // Strain rate, spin and drho/dt from the new velocities at the old positions (the neighbour
   // list of this step is still exact), then the stress update.

@@ -31,6 +31,38 @@ inline void verlet_step(Vec<D>& x, Vec<D>& v, Vec<D>& v_previous, const Vec<D>& 
   v = v_next;
 }
 
+/// One modified-Verlet step where the acceleration a = a_rest + a_drag has a drag part that is
+/// linear in the particle's own velocity with rate lambda >= 0 [1/s] (d a_drag / d v = -lambda,
+/// a_drag evaluated at v^n): the drag is taken implicitly at the new level, so that lambda dt >> 1
+/// (a drag relaxation time far below dt) stays stable and strongly damped, and a steady state
+/// (a = 0) is kept exactly:
+///   Euler:  v^{n+1} = v^n + dt a / (1 + lambda dt)
+///   Verlet: v^{n+1} = v^{n-1} + 2 dt [a - lambda (v^{n+1} - v^n)]
+///           = [v^{n-1} + 2 dt (a + lambda v^n)] / (1 + 2 lambda dt)
+/// (toward a partner at rest the velocity falls by 1 / (1 + lambda dt) per Euler step and by
+/// 1 / (1 + 2 lambda dt) per two Verlet steps, where the explicit scheme grows). The position uses
+/// the acceleration the velocity update implies. lambda = 0 is verlet_step().
+template <int D>
+inline void verlet_step_implicit_drag(Vec<D>& x, Vec<D>& v, Vec<D>& v_previous, const Vec<D>& a,
+                                      double lambda, double dt, bool euler) {
+  if (!(lambda > 0.0)) {
+    verlet_step<D>(x, v, v_previous, a, dt, euler);
+    return;
+  }
+  const double l_dt = lambda * dt;
+  Vec<D> v_next, a_used;
+  if (euler) {
+    v_next = v + (dt / (1.0 + l_dt)) * a;
+    a_used = a / (1.0 + l_dt);
+  } else {
+    v_next = (v_previous + (2.0 * dt) * (a + lambda * v)) / (1.0 + 2.0 * l_dt);
+    a_used = a - lambda * (v_next - v);
+  }
+  x += dt * v + (0.5 * dt * dt) * a_used;
+  v_previous = v;
+  v = v_next;
+}
+
 /// One modified-Verlet step of a scalar (e.g. density) with rate dq/dt.
 inline void verlet_step_scalar(double& q, double& q_previous, double rate, double dt, bool euler) {
   const double next = euler ? q + dt * rate : q_previous + 2.0 * dt * rate;

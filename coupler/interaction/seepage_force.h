@@ -34,6 +34,15 @@ sph::Vec<D> seepage_force(double weighted_a, double weighted_b,
   return (weighted_a + weighted_b * relative_velocity.norm()) * relative_velocity;
 }
 
+/// The derivative of eq. 13 along v_r, d|f| / d|v_r| = A + 2 B |v_r| [kg/(m^3 s)]: the rate of
+/// the implicit drag (sph/integrator.h) per unit volume (Darcy: A).
+template <int D>
+double seepage_rate_coefficient(double weighted_a, double weighted_b,
+                                const sph::Vec<D>& relative_velocity) {
+  if (weighted_b == 0.0) return weighted_a;
+  return weighted_a + 2.0 * weighted_b * relative_velocity.norm();
+}
+
 /// The seepage law of one soil material: a and b of eq. 13 as functions of a particle's porosity.
 class SeepageLaw {
  public:

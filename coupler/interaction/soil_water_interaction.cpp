@@ -28,6 +28,7 @@ InteractionParameters parameters_from_scene(const scene::Scene& s) {
   p.c_a = s.run.c_a;
   p.unit_weight_water = water.rho0 * gravity;
   p.submerged_saturation = s.coupling.submerged_saturation;
+  p.implicit_drag = s.coupling.implicit_drag;
   for (const scene::SoilMaterial& m : s.soil->materials) {
     SoilMaterialTerms terms;
     terms.law = SeepageLaw::from_material(m, gravity, nu);
@@ -57,7 +58,7 @@ std::unique_ptr<InteractionEngine> make_engine(const scene::Scene& s, int thread
 
 }  // namespace
 
-std::vector<std::string> interaction_terms(const scene::SoilPhase& soil) {
+std::vector<std::string> interaction_terms(const scene::SoilPhase& soil, bool implicit_drag) {
   std::vector<std::string> terms = {"saturation", "submerged_density"};
   auto add = [&](const std::string& term) {
     if (std::find(terms.begin(), terms.end(), term) == terms.end()) terms.push_back(term);
@@ -72,6 +73,7 @@ std::vector<std::string> interaction_terms(const scene::SoilPhase& soil) {
     if (m.wet_cohesion_loss) add("wet_marking");
     if (m.fixed) add("fixed_bed");
   }
+  if (terms.size() > 2 && implicit_drag) add("implicit_drag");
   return terms;
 }
 
@@ -89,7 +91,7 @@ SoilWaterInteraction::SoilWaterInteraction(const scene::Scene& scene, int thread
   }
   damping_duration_ = scene.soil->damping_duration;
   material_count_ = scene.soil->materials.size();
-  terms_ = interaction_terms(*scene.soil);
+  terms_ = interaction_terms(*scene.soil, scene.coupling.implicit_drag);
   out_.force_on_water.assign(dimension_, 0.0);
   out_.force_on_soil.assign(dimension_, 0.0);
 }

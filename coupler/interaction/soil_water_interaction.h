@@ -30,9 +30,13 @@ struct InteractionOutputs {
   std::vector<double> water_acceleration;  ///< n_water x D, order of water.overlap_id; empty: none
   std::vector<double> soil_acceleration;   ///< n_soil x D, order of soil.overlap_id; empty: none
   std::vector<double> saturation;          ///< s_i per soil overlap particle; empty: none
-  std::vector<double> force_on_water;      ///< sum_a m_a a_a [N] (D components)
-  std::vector<double> force_on_soil;       ///< sum_i m_i^s a_i [N], fixed soil included
-  double force_magnitude_sum = 0.0;        ///< sum_i |m_i^s a_i| + sum_a |m_a a_a| [N]
+  /// The drag's rate lambda = -d a / d v_own [1/s] per overlap particle (coupling.implicit_drag;
+  /// empty: off or no force): lambda_a = sum_i V_i c_ia W_ia / rho_a and lambda_i = sum_a V_a
+  /// c_ia W_ia / rho_i^s, c_ia = gamma_w (a + 2 b |v_r|) the derivative of eq. 13 along v_r.
+  std::vector<double> water_rate, soil_rate;
+  std::vector<double> force_on_water;  ///< sum_a m_a a_a [N] (D components)
+  std::vector<double> force_on_soil;   ///< sum_i m_i^s a_i [N], fixed soil included
+  double force_magnitude_sum = 0.0;    ///< sum_i |m_i^s a_i| + sum_a |m_a a_a| [N]
 };
 
 /// What one evaluation found.
@@ -48,8 +52,8 @@ struct InteractionSummary {
 /// The terms the interaction evaluates for these soil materials: "saturation" and
 /// "submerged_density" always; "seepage_force" and "seepage_<law>" for each law in use (eq.
 /// 13-15), "variable_permeability" (eq. 20) where a material with a law has it, "wet_marking"
-/// (wet_cohesion_loss materials), "fixed_bed".
-std::vector<std::string> interaction_terms(const scene::SoilPhase& soil);
+/// (wet_cohesion_loss materials), "fixed_bed", "implicit_drag" (with a seepage law).
+std::vector<std::string> interaction_terms(const scene::SoilPhase& soil, bool implicit_drag);
 
 class SoilWaterInteraction {
  public:
@@ -76,6 +80,8 @@ class SoilWaterInteraction {
   const std::vector<double>& water_acceleration() const { return out_.water_acceleration; }
   const std::vector<double>& soil_acceleration() const { return out_.soil_acceleration; }
   const std::vector<double>& saturation() const { return out_.saturation; }
+  const std::vector<double>& water_rate() const { return out_.water_rate; }
+  const std::vector<double>& soil_rate() const { return out_.soil_rate; }
   /// The interaction terms of the scene (run.json interaction.terms; interaction_terms()).
   const std::vector<std::string>& terms() const { return terms_; }
 

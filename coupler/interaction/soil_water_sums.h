@@ -39,6 +39,7 @@ struct InteractionParameters {
   double unit_weight_water = 0.0;     ///< gamma_w = rho0_w |g| [N/m^3]
   double submerged_saturation = 0.8;  ///< coupling.submerged_saturation
   int threads = 0;                    ///< OpenMP threads of the sums; 0: OpenMP's default
+  bool implicit_drag = true;          ///< also the drag rates (InteractionOutputs)
   std::vector<SoilMaterialTerms> materials;
 };
 
@@ -116,7 +117,8 @@ class SoilWaterSums final : public InteractionEngine {
   /// the number of pairs.
   std::size_t water_pass(const coupling::StepState& water, bool forces, InteractionOutputs& out,
                          double& max_a2) {
-    constexpr int kStride = D + 1;  // per soil particle: F_i (D components), then s_i
+    constexpr int kStride = D + 2;  // per soil particle: F_i (D components), s_i, lambda_i rho_i^s
+    const bool rates = forces && p_.implicit_drag;
     const std::int64_t n_water = static_cast<std::int64_t>(water.overlap_id.size());
     const std::size_t soil_values = grid_.soil_size() * kStride;
     const int max_threads = threads();
@@ -125,6 +127,11 @@ class SoilWaterSums final : public InteractionEngine {
       out.water_acceleration.resize(water.overlap_id.size() * D);
     } else {
       out.water_acceleration.clear();
+    }
+    if (rates) {
+      out.water_rate.resize(water.overlap_id.size());
+    } else {
+      out.water_rate.clear();
     }
     std::size_t pairs = 0;
     const double support = kernel_.support();
@@ -144,18 +151,25 @@ class SoilWaterSums final : public InteractionEngine {
         const double rho_a = water.overlap_density[a];
         const double volume_a = water.overlap_mass[a] / rho_a;
         Vec sum = Vec::Zero();  // sum_i V_i f_ia W_ia
+        double rate_sum = 0.0;  // sum_i V_i c_ia W_ia
         grid_.for_each_candidate(a, [&](std::int32_t s, const Vec&, double r) {
           const double w = kernel_.w(r);  // 0 beyond the support
           double* soil_sums = acc.data() + static_cast<std::size_t>(s) * kStride;
           soil_sums[D] += volume_a * w;
           pairs += r < support;
           if (!soil_active_[s]) return;
-          const Vec f = seepage_force<D>(soil_a_[s], soil_b_[s], Vec(v_a - soil_velocity_[s]));
+          const Vec v_r = v_a - soil_velocity_[s];
+          const Vec f = seepage_force<D>(soil_a_[s], soil_b_[s], v_r);
           for (int k = 0; k < D; ++k) soil_sums[k] += volume_a * w * f[k];
           sum += (soil_volume_[s] * w) * f;
+          if (!rates) return;
+          const double c = seepage_rate_coefficient<D>(soil_a_[s], soil_b_[s], v_r);
+          soil_sums[D + 1] += volume_a * w * c;
+          rate_sum += soil_volume_[s] * w * c;
         });
         if (!forces) continue;
         const Vec acceleration = -sum / rho_a;
+        if (rates) out.water_rate[a] = rate_sum / rho_a;
         for (int k = 0; k < D; ++k) {
           out.water_acceleration[a * D + k] = acceleration[k];
           force[k] += water.overlap_mass[a] * acceleration[k];
@@ -173,13 +187,19 @@ class SoilWaterSums final : public InteractionEngine {
   /// Reduces the per-thread soil sums: saturation, rho^s, soil accelerations, force on the soil.
   void soil_pass(const coupling::StepState& soil, bool forces, InteractionOutputs& out,
                  double& max_a2) {
-    constexpr int kStride = D + 1;
+    constexpr int kStride = D + 2;
+    const bool rates = forces && p_.implicit_drag;
     const std::int64_t n = static_cast<std::int64_t>(grid_.soil_size());
     out.saturation.resize(n);
     if (forces) {
       out.soil_acceleration.resize(n * D);
     } else {
       out.soil_acceleration.clear();
+    }
+    if (rates) {
+      out.soil_rate.resize(n);
+    } else {
+      out.soil_rate.clear();
     }
     const int partials = threads_used_;  // per-thread buffers the water pass filled
     double force[D] = {}, magnitude = 0.0, a2_max = 0.0;
@@ -201,6 +221,7 @@ class SoilWaterSums final : public InteractionEngine {
       const double effective_mass = soil.overlap_mass[i] * rho_s / rho;  // m_i^s
       Vec acceleration;
       for (int k = 0; k < D; ++k) acceleration[k] = sums[k] / rho_s;
+      if (rates) out.soil_rate[i] = sums[D + 1] / rho_s;
       for (int k = 0; k < D; ++k) {
         out.soil_acceleration[i * D + k] = acceleration[k];
         force[k] += effective_mass * acceleration[k];
