@@ -56,6 +56,7 @@ FlowZones<D>::FlowZones(const scene::WaterPhase& water, double dp, double hold_u
     b.max = sph::to_vec<D>(water.outflows[i].max, what + ".max");
     check_box<D>(b.min, b.max, what);
     outflows_.push_back(b);
+    outflow_start_.push_back(water.outflows[i].start_time);
   }
   step_.resize(inflows_.size());
   begin_step(0.0, 0.0);

@@ -55,9 +55,10 @@ class FlowZones {
     return -1;
   }
   /// True if x lies in the closed box of an outflow zone.
-  bool in_outflow(const Vec& x) const {
-    for (const Box& b : outflows_)
-      if (inside(b, x)) return true;
+  /// True when x lies in an outflow zone that is active at `time` (its start_time reached).
+  bool in_outflow(const Vec& x, double time) const {
+    for (std::size_t z = 0; z < outflows_.size(); ++z)
+      if (time >= outflow_start_[z] && inside(outflows_[z], x)) return true;
     return false;
   }
 
@@ -108,6 +109,7 @@ class FlowZones {
 
   std::vector<Inflow> inflows_;
   std::vector<Box> outflows_;
+  std::vector<double> outflow_start_;  ///< per outflow zone: start_time [s]
   double hold_until_ = 0.0;
   std::vector<StepVelocities> step_;
   FluidParticles<D> born_;  ///< staging of the particles born in renew()

@@ -279,7 +279,7 @@ void FluidSolver<D>::integrate(double dt) {
 template <int D>
 bool FluidSolver<D>::leaves(std::size_t a) const {
   const FluidParticles<D>& P = particles_;
-  return box_.outside(P.position[a]) || (P.zone[a] < 0 && zones_.in_outflow(P.position[a]));
+  return box_.outside(P.position[a]) || (P.zone[a] < 0 && zones_.in_outflow(P.position[a], time_));
 }
 
 template <int D>

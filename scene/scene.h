@@ -77,6 +77,7 @@ struct InflowZone {
 /// A water outflow zone ([[water.outflow]]): particles entering the box are removed.
 struct OutflowZone {
   std::vector<double> min, max;  ///< the box [m]
+  double start_time = 0.0;       ///< removes water from this time on [s]
 };
 
 /// Soil-water interaction settings ([coupling]).

@@ -59,6 +59,12 @@ void add_flow_zones(SceneSchema& s) {
                        .unit("m")
                        .required()
                        .doc("Upper corner; greater than min in every component."));
+  s.keys.push_back(Key("water.outflow[].start_time", T::Float)
+                       .unit("s")
+                       .fallback("0.0")
+                       .at_least(0)
+                       .doc("The zone removes water from this time on (e.g. the sudden removal "
+                            "of a water surcharge)."));
 }
 
 void add_coupling(SceneSchema& s) {
@@ -149,6 +155,7 @@ void build_flow_zones(const toml::table& water, WaterPhase& w) {
       OutflowZone z;
       z.min = vector_of(t.get("min"));
       z.max = vector_of(t.get("max"));
+      z.start_time = *t["start_time"].value<double>();
       w.outflows.push_back(std::move(z));
     }
   }

@@ -25,12 +25,17 @@ TEST(FlowZones, GeometrySpeedsAndBadInput) {
   scene::WaterPhase w;
   w.inflows.push_back(inflow({0, 0}, {0.1, 0.05}, {-1, 0}, 2.0, 0.1, 0.2));
   w.outflows.push_back(outflow({1, 0}, {1.2, 0.1}));
+  scene::OutflowZone later = outflow({2, 0}, {2.2, 0.1});
+  later.start_time = 0.3;  // a zone that opens at 0.3 s
+  w.outflows.push_back(later);
   const FlowZones<2> zones(w, 0.01, 0.15);  // damping stage until 0.15 s
   ASSERT_EQ(zones.inflow_count(), 1u);
   EXPECT_EQ(zones.inflow_at(Vec2(0.05, 0.02)), 0);
   EXPECT_EQ(zones.inflow_at(Vec2(0.15, 0.02)), -1);
-  EXPECT_TRUE(zones.in_outflow(Vec2(1.0, 0.1)));  // closed box
-  EXPECT_FALSE(zones.in_outflow(Vec2(0.99, 0.05)));
+  EXPECT_TRUE(zones.in_outflow(Vec2(1.0, 0.1), 0.0));  // closed box
+  EXPECT_FALSE(zones.in_outflow(Vec2(0.99, 0.05), 0.0));
+  EXPECT_FALSE(zones.in_outflow(Vec2(2.1, 0.05), 0.29));  // not open yet
+  EXPECT_TRUE(zones.in_outflow(Vec2(2.1, 0.05), 0.3));
   // The ramp starts at 0.1 s but the damping stage holds it at 0 until 0.15 s; then 2 (t - 0.1) /
   // 0.2 (exact in binary up to round-off).
   EXPECT_EQ(zones.speed(0, 0.12), 0.0);

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -133,6 +134,78 @@ TEST(Stability, FluidisingBedUnderASuddenInflow) {
 TEST(Stability, DtZeroFarTooLargeIsCappedByTheLimits) {
   const auto run = run_case("dam_break", {"run.dt0=0.01", "run.max_steps=300"});
   expect_stable(run, 0.0, 300);
+}
+
+// Sudden removal of a surcharge: a sand layer 0.1 m deep, submerged under 0.15 m of water (the
+// surcharge: the water above y = 0.11 m) in a 0.2 m tank; after a 0.05 s damping stage an outflow
+// zone opens at t = 0.1 s over everything above y = 0.11 m and removes that water within a step.
+// 4,000 steps (~0.2 s).
+constexpr const char* kSurchargeScene = R"(
+[scene]
+name = "surcharge_removal"
+[run]
+dimension = 2
+end_time = 1.0
+output_interval = 0.01
+dp = 0.005
+h_factor = 1.2
+dt0 = 1.0e-4
+gravity = [0.0, -9.81]
+[domain]
+min = [-0.03, -0.03]
+max = [0.23, 0.4]
+[water]
+sound_speed = 20.0
+[[water.blocks]]
+label = "pool"
+shape = "box"
+min = [0.0, 0.0]
+max = [0.2, 0.25]
+[[water.outflow]]
+min = [-0.03, 0.11]
+max = [0.23, 0.4]
+start_time = 0.1
+[soil]
+damping_duration = 0.05
+initial_stress = "geostatic"
+[[soil.materials]]
+name = "sand"
+density = 1900.0
+saturated_density = 2000.0
+porosity = 0.4
+young_modulus = 2.0e6
+poisson_ratio = 0.3
+friction_angle = 30.0
+seepage = "darcy_kozeny_carman"
+effective_diameter = 0.0005
+[[soil.blocks]]
+label = "layer"
+shape = "box"
+min = [0.0, 0.0]
+max = [0.2, 0.1]
+material = "sand"
+[[walls]]
+label = "tank"
+shape = "container"
+min = [0.0, 0.0]
+max = [0.2, 0.3]
+layers = 3
+open_faces = ["y+"]
+)";
+
+TEST(Stability, SuddenRemovalOfAWaterSurcharge) {
+  const std::string dir = fresh_dir("stability-surcharge");
+  CaseRun run;
+  run.out = dir + "/out";
+  run.result =
+      run_process({bin("coupler"), "run", write_text(dir + "/surcharge.toml", kSurchargeScene),
+                   "--out", run.out, "--no-progress", "--set", "run.max_steps=6000"},
+                  dir + "/log.txt", 300);
+  if (std::filesystem::exists(run.out + "/run.json")) run.record = read_json(run.out + "/run.json");
+  expect_stable(run, 0.0, 6000);
+  const auto& water = run.record.at("phases").at("water");
+  EXPECT_GT(water.at("mass").at("outflow").get<double>(), 0.0) << "the surcharge was not removed";
+  EXPECT_EQ(run.record.at("phases").at("soil").at("particles").at("removed"), 0);
 }
 
 }  // namespace
