@@ -85,6 +85,7 @@ struct CouplingSettings {
   double submerged_saturation = 0.8;  ///< water fraction from which soil is submerged
   double wet_saturation = 0.1;        ///< water fraction from which soil is wet
   bool implicit_drag = true;          ///< the drag's rate goes to the solvers (implicit drag)
+  double implicit_drag_from = 0.25;   ///< lambda dt from which a particle's drag is implicit
 };
 
 /// Water phase (table [water]).
