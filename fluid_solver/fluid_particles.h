@@ -15,22 +15,26 @@ struct FluidParticles {
   std::size_t n_free = 0;
 
   std::vector<Vec> position, velocity;
-  std::vector<Vec> velocity_previous;    ///< v^{n-1} of the modified Verlet scheme
-  std::vector<Vec> acceleration;         ///< internal dv/dt of this step (incl. gravity)
-  std::vector<Vec> interaction;          ///< acceleration added by the coupler (last step)
-  std::vector<double> interaction_rate;  ///< its drag rate lambda [1/s] (implicit drag; 0: off)
-  std::vector<Vec> wall_velocity;        ///< walls: velocity seen by viscous terms (Adami 2012)
+  std::vector<Vec> velocity_previous;  ///< v^{n-1} of the modified Verlet scheme
+  std::vector<Vec> acceleration;       ///< internal dv/dt of this step (incl. gravity)
+  std::vector<Vec> interaction;        ///< acceleration added by the coupler (last step)
+  std::vector<Vec> wall_velocity;      ///< walls: velocity seen by viscous terms (Adami 2012)
   std::vector<double> density, density_previous, density_rate;
   std::vector<double> pressure, sound_speed, mass;
-  /// 1 / rho and m / rho of every particle, derived from density and mass at the start of each
-  /// rate evaluation (fluid_rates.h) so that the pair loop multiplies instead of dividing.
-  std::vector<double> inverse_density, volume;
   std::vector<double> remove_at;  ///< walls: removal time [s] (< 0: never); water: -1
   std::vector<std::int64_t> id;
   std::vector<std::uint8_t> fixed;  ///< 1 for wall particles (snapshot field "fixed")
   /// Index of the inflow zone (scene water.inflows) whose prescribed velocity a water particle
   /// follows (flow_zones.h); -1 for free water and for walls. Array resizes fill 0: set it.
   std::vector<std::int32_t> zone;
+
+  // Derived per step, not part of the particle state (not resized, permuted or checkpointed with
+  // the arrays above; whoever fills them sizes them):
+  /// 1 / rho and m / rho of every particle, from density and mass at the start of each rate
+  /// evaluation (fluid_rates.h), so that the pair loop multiplies instead of dividing.
+  std::vector<double> inverse_density, volume;
+  /// The coupler's drag rate lambda [1/s] of this step (set_interaction_rate; implicit drag).
+  std::vector<double> interaction_rate;
 
   std::size_t size() const { return position.size(); }
   std::size_t wall_count() const { return size() - n_free; }
@@ -95,7 +99,6 @@ struct FluidParticles {
     fn(p.position...), fn(p.velocity...), fn(p.velocity_previous...), fn(p.acceleration...);
     fn(p.interaction...), fn(p.wall_velocity...), fn(p.density...), fn(p.density_previous...);
     fn(p.density_rate...), fn(p.pressure...), fn(p.sound_speed...), fn(p.mass...);
-    fn(p.inverse_density...), fn(p.volume...), fn(p.interaction_rate...);
     fn(p.remove_at...), fn(p.id...), fn(p.fixed...), fn(p.zone...);
   }
 

@@ -12,6 +12,7 @@
 #include "fluid_solver/wall_boundary.h"
 #include "sph/free_particle_totals.h"
 #include "sph/integrator.h"
+#include "sph/overlap_scatter.h"
 #include "sph/particle_removal.h"
 
 namespace porosph::fluid {
@@ -220,16 +221,8 @@ void FluidSolver<D>::add_interaction(const std::vector<double>& acceleration) {
 
 template <int D>
 void FluidSolver<D>::set_interaction_rate(const std::vector<double>& rate) {
-  if (!rate.empty() && rate.size() != overlap_index_.size()) {
-    throw std::invalid_argument("set_interaction_rate: expected " +
-                                std::to_string(overlap_index_.size()) + " values, got " +
-                                std::to_string(rate.size()));
-  }
-  std::fill(particles_.interaction_rate.begin(), particles_.interaction_rate.end(), 0.0);
-  for (std::size_t i = 0; i < rate.size(); ++i) {
-    const std::size_t index = static_cast<std::size_t>(overlap_index_[i]);
-    particles_.interaction_rate[index] = rate[i];
-  }
+  sph::scatter_overlap_values(overlap_index_, rate, particles_.size(), particles_.n_free,
+                              particles_.interaction_rate, "set_interaction_rate");
 }
 
 template <int D>
@@ -241,6 +234,7 @@ void FluidSolver<D>::advance(double dt) {
     interaction_nonzero_ = false;
   }
   interaction_fresh_ = false;
+  if (P.interaction_rate.size() != P.size()) P.interaction_rate.assign(P.size(), 0.0);  // none set
   if (!damping_.frozen(time_)) integrate(dt);  // else the water waits (damping_stage.h)
   time_ += dt;
   ++step_;

@@ -18,18 +18,15 @@ struct SoilParticles {
   std::size_t n_free = 0;
 
   std::vector<Vec> position, velocity;
-  std::vector<Vec> acceleration;         ///< internal dv/dt of this step (incl. gravity)
-  std::vector<Vec> interaction;          ///< acceleration added by the coupler (last step)
-  std::vector<double> interaction_rate;  ///< its drag rate lambda [1/s] (implicit drag; 0: off)
-  std::vector<Vec> wall_velocity;        ///< fixed: velocity seen by the viscous terms (mirrored)
-  std::vector<Vec> displacement;         ///< integral of v dt since t = 0 (periodic-safe)
+  std::vector<Vec> acceleration;   ///< internal dv/dt of this step (incl. gravity)
+  std::vector<Vec> interaction;    ///< acceleration added by the coupler (last step)
+  std::vector<Vec> wall_velocity;  ///< fixed: velocity seen by the viscous terms (mirrored)
+  std::vector<Vec> displacement;   ///< integral of v dt since t = 0 (periodic-safe)
   std::vector<Vec>
       wall_normal;             ///< fixed: geometric normal (wall_normals.h; 0 corner, NaN unknown)
   std::vector<Tensor> stress;  ///< sigma, tension positive, plane strain in 2D [Pa]
   std::vector<Tensor> velocity_gradient;  ///< L = dv/dx of this step (eq. 7-8), 3x3 embedded
   std::vector<Tensor> artificial_stress;  ///< R of Gray et al. 2001 (zero when off)
-  /// 1 where R != 0 (some principal stress in tension): pairs of two 0 particles skip the term.
-  std::vector<std::uint8_t> in_tension;
   std::vector<double> density, density_rate, reference_density, mass;
   std::vector<double> porosity;        ///< eq. 20, from the density
   std::vector<double> plastic_strain;  ///< accumulated plastic multiplier lambda [-]
@@ -42,6 +39,14 @@ struct SoilParticles {
   std::vector<std::uint8_t> no_slip;   ///< fixed: 1 no-slip, 0 free-slip
   std::vector<std::uint8_t> wet;       ///< has touched water (sticky; wet_cohesion_loss)
 
+  // Derived per step, not part of the particle state (not resized, permuted or checkpointed with
+  // the arrays above; whoever fills them sizes them):
+  /// 1 where R != 0 (some principal stress in tension; update_artificial_stress): pairs of two 0
+  /// particles skip the artificial-stress term.
+  std::vector<std::uint8_t> in_tension;
+  /// The coupler's drag rate lambda [1/s] of this step (set_interaction_rate; implicit drag).
+  std::vector<double> interaction_rate;
+
   std::size_t size() const { return position.size(); }
 
   /// Calls fn(array) on every per-particle array (to resize, permute or compact them together).
@@ -51,7 +56,7 @@ struct SoilParticles {
     fn(displacement), fn(wall_normal), fn(stress), fn(velocity_gradient), fn(artificial_stress),
         fn(density);
     fn(density_rate), fn(reference_density), fn(mass), fn(porosity), fn(plastic_strain);
-    fn(saturation), fn(weight_ratio), fn(wet), fn(in_tension), fn(interaction_rate);
+    fn(saturation), fn(weight_ratio), fn(wet);
     fn(remove_at), fn(id), fn(material), fn(fixed), fn(no_slip);
   }
 

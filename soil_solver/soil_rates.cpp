@@ -73,6 +73,7 @@ template <int D>
 void update_artificial_stress(const SoilParams<D>& params, SoilParticles<D>& P) {
   const std::int64_t n = static_cast<std::int64_t>(P.size());
   const double epsilon = params.artificial_stress.epsilon;
+  P.in_tension.resize(P.size());
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     const std::int64_t m = P.material[i];

@@ -13,6 +13,7 @@
 #include "soil_solver/stress_update.h"
 #include "soil_solver/wall_normals.h"
 #include "sph/geometry.h"
+#include "sph/overlap_scatter.h"
 #include "sph/particle_removal.h"
 
 namespace porosph::soil {
@@ -256,17 +257,8 @@ void SoilSolver<D>::set_saturation(const std::vector<double>& saturation) {
 
 template <int D>
 void SoilSolver<D>::set_interaction_rate(const std::vector<double>& rate) {
-  if (!rate.empty() && rate.size() != overlap_index_.size()) {
-    throw std::invalid_argument("set_interaction_rate: expected " +
-                                std::to_string(overlap_index_.size()) + " values, got " +
-                                std::to_string(rate.size()));
-  }
-  std::fill(particles_.interaction_rate.begin(), particles_.interaction_rate.end(), 0.0);
-  for (std::size_t i = 0; i < rate.size(); ++i) {
-    const std::size_t index = static_cast<std::size_t>(overlap_index_[i]);
-    if (index >= particles_.n_free) continue;
-    particles_.interaction_rate[index] = rate[i];
-  }
+  sph::scatter_overlap_values(overlap_index_, rate, particles_.size(), particles_.n_free,
+                              particles_.interaction_rate, "set_interaction_rate");
 }
 
 template <int D>
@@ -277,6 +269,7 @@ void SoilSolver<D>::advance(double dt) {
     interaction_nonzero_ = false;
   }
   interaction_fresh_ = false;
+  if (P.interaction_rate.size() != P.size()) P.interaction_rate.assign(P.size(), 0.0);  // none set
   const bool damping = time_ < params_.damping_duration;
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
   const double inv_h2 = 1.0 / (params_.h * params_.h);

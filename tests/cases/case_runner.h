@@ -31,6 +31,22 @@ inline CaseRun run_case_scene(const std::string& name, const std::string& scene_
   return run;
 }
 
+/// Writes `scene_toml` to a fresh directory named after `name` and runs it like run_case_scene.
+inline CaseRun run_scene_text(const std::string& name, const std::string& scene_toml,
+                              const std::vector<std::string>& overrides,
+                              double timeout_seconds = 300) {
+  CaseRun run;
+  const std::string dir = fresh_dir("scene-" + name);
+  run.out = dir + "/out";
+  std::vector<std::string> argv = {
+      bin("coupler"), "run",   write_text(dir + "/" + name + ".toml", scene_toml),
+      "--out",        run.out, "--no-progress"};
+  for (const auto& o : overrides) argv.insert(argv.end(), {"--set", o});
+  run.result = run_process(argv, dir + "/log.txt", timeout_seconds);
+  if (std::filesystem::exists(run.out + "/run.json")) run.record = read_json(run.out + "/run.json");
+  return run;
+}
+
 /// Runs cases/<name>/scene.toml.
 inline CaseRun run_case(const std::string& name, const std::vector<std::string>& overrides,
                         double timeout_seconds = 300) {

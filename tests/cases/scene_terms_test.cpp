@@ -23,14 +23,19 @@ bool has(const std::vector<std::string>& terms, const std::string& term) {
   return std::find(terms.begin(), terms.end(), term) != terms.end();
 }
 
-TEST(SceneTerms, WaterOnlySceneStartsOnlyTheWaterSolver) {
-  const auto run = run_case("dam_break", {"run.max_steps=5"});
+/// A one-phase run: only `phase` in run.json, no interaction, no snapshot file of the other phase.
+void expect_one_phase(const CaseRun& run, const std::string& phase, const std::string& absent_h5) {
   ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
   const auto& phases = run.record.at("phases");
   ASSERT_EQ(phases.size(), 1u) << phases.dump();
-  EXPECT_TRUE(phases.contains("water"));
+  EXPECT_TRUE(phases.contains(phase));
   EXPECT_FALSE(run.record.contains("interaction"));
-  EXPECT_FALSE(std::filesystem::exists(run.out + "/soil.h5"));
+  EXPECT_FALSE(std::filesystem::exists(run.out + "/" + absent_h5));
+}
+
+TEST(SceneTerms, WaterOnlySceneStartsOnlyTheWaterSolver) {
+  const auto run = run_case("dam_break", {"run.max_steps=5"});
+  expect_one_phase(run, "water", "soil.h5");
   const auto terms = terms_of(run.record, "water");
   for (const char* term : {"continuity", "pressure_gradient", "gravity", "morris_viscosity",
                            "artificial_viscosity", "density_diffusion", "walls_no_slip"}) {
@@ -42,12 +47,7 @@ TEST(SceneTerms, WaterOnlySceneStartsOnlyTheWaterSolver) {
 
 TEST(SceneTerms, SoilOnlySceneStartsOnlyTheSoilSolver) {
   const auto run = run_case("granular_collapse", {"run.max_steps=5"});
-  ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
-  const auto& phases = run.record.at("phases");
-  ASSERT_EQ(phases.size(), 1u) << phases.dump();
-  EXPECT_TRUE(phases.contains("soil"));
-  EXPECT_FALSE(run.record.contains("interaction"));
-  EXPECT_FALSE(std::filesystem::exists(run.out + "/fluid.h5"));
+  expect_one_phase(run, "soil", "fluid.h5");
   const auto terms = terms_of(run.record, "soil");
   EXPECT_TRUE(has(terms, "drucker_prager_return"));
   EXPECT_TRUE(has(terms, "artificial_viscosity"));
@@ -127,13 +127,10 @@ phases = ["soil"]
 )";
 
 TEST(SceneTerms, PhasesThatNeverMeetExchangeNoParticles) {
-  const std::string dir = fresh_dir("scene-terms-apart");
-  const std::string scene = write_text(dir + "/apart.toml", kApartScene);
-  const std::string out = dir + "/out";
-  const auto result = run_process({bin("coupler"), "run", scene, "--out", out, "--no-progress"},
-                                  dir + "/log.txt", 120);
-  ASSERT_EQ(result.exit_code, 0) << result.output;
-  const auto record = read_json(out + "/run.json");
+  const auto run = run_scene_text("apart", kApartScene, {}, 120);
+  ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
+  const auto& record = run.record;
+  const std::string& out = run.out;
   ASSERT_EQ(record.at("phases").size(), 2u);
   const auto& interaction = record.at("interaction");
   EXPECT_EQ(interaction.at("evaluations"), 0) << interaction.dump();

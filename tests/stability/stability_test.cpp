@@ -12,7 +12,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -194,14 +193,7 @@ open_faces = ["y+"]
 )";
 
 TEST(Stability, SuddenRemovalOfAWaterSurcharge) {
-  const std::string dir = fresh_dir("stability-surcharge");
-  CaseRun run;
-  run.out = dir + "/out";
-  run.result =
-      run_process({bin("coupler"), "run", write_text(dir + "/surcharge.toml", kSurchargeScene),
-                   "--out", run.out, "--no-progress", "--set", "run.max_steps=6000"},
-                  dir + "/log.txt", 300);
-  if (std::filesystem::exists(run.out + "/run.json")) run.record = read_json(run.out + "/run.json");
+  const auto run = run_scene_text("surcharge", kSurchargeScene, {"run.max_steps=6000"});
   expect_stable(run, 0.0, 6000);
   const auto& water = run.record.at("phases").at("water");
   EXPECT_GT(water.at("mass").at("outflow").get<double>(), 0.0) << "the surcharge was not removed";
