@@ -79,7 +79,7 @@ void CoupledStepLoop::collect_states() {
   std::size_t received_count = 0;
   const double timeout = scene_.run.solver_timeout;
   auto last_heard = Clock::now();
-  Incoming in;
+  Incoming& in = incoming_;
   while (received_count < phases_.size()) {
     // Receive first: a solver that reported an error and exited has its message queued, and
     // that message (not "exited with code N") is the reason the user needs.
@@ -129,7 +129,7 @@ void CoupledStepLoop::collect_states() {
   }
 }
 
-void CoupledStepLoop::absorb_state(const std::string& phase, const coupling::StepState& state) {
+void CoupledStepLoop::absorb_state(const std::string& phase, coupling::StepState& state) {
   const double tolerance = 1e-9 * std::max(1.0, std::abs(record_.time));
   if (std::abs(state.time - record_.time) > tolerance) {
     std::ostringstream msg;
@@ -138,15 +138,17 @@ void CoupledStepLoop::absorb_state(const std::string& phase, const coupling::Ste
         << " s: the solver did not advance by the shared dt";
     throw std::runtime_error(msg.str());
   }
-  const auto& d = state.diagnostics;
-  if (!std::isfinite(d.kinetic_energy) || !std::isfinite(d.mass) || !(state.dt_limit > 0)) {
+  const auto& reported = state.diagnostics;
+  if (!std::isfinite(reported.kinetic_energy) || !std::isfinite(reported.mass) ||
+      !(state.dt_limit > 0)) {
     std::ostringstream msg;
     msg << "the " << phase << " solver reported a non-finite state at step " << record_.steps
-        << ", t = " << record_.time << " s (kinetic energy " << d.kinetic_energy << ", mass "
-        << d.mass << ", dt limit " << state.dt_limit << ")";
+        << ", t = " << record_.time << " s (kinetic energy " << reported.kinetic_energy << ", mass "
+        << reported.mass << ", dt limit " << state.dt_limit << ")";
     throw std::runtime_error(msg.str());
   }
-  states_[phase] = state;
+  std::swap(states_[phase], state);  // no copy of the particle arrays
+  const auto& d = states_[phase].diagnostics;
   PhaseRecord& phase_record = record_.phases[phase];
   if (record_.steps == 0) phase_record.initial = d;
   phase_record.last = d;

@@ -46,7 +46,9 @@ class CoupledStepLoop {
   /// Evaluates the interaction for the collected states (scenes with both phases) and books its
   /// statistics; returns its dt limit (infinity without interaction).
   double compute_interaction();
-  void absorb_state(const std::string& phase, const coupling::StepState& state);
+  /// Checks `state` and keeps it as the phase's current state (swapped in: `state` is left with
+  /// the previous one, whose storage the next receive reuses).
+  void absorb_state(const std::string& phase, coupling::StepState& state);
   void append_timeseries_row(double dt);
   void send_commands(double dt, bool write_output, std::uint32_t output_index, bool stop,
                      std::uint32_t checkpoint_index = 0);
@@ -78,6 +80,7 @@ class CoupledStepLoop {
   std::map<std::string, coupling::StepState> states_;
   std::map<std::string, coupling::StepCommand> commands_;
   std::map<std::string, bool> received_;  ///< which phases reported this step
+  Incoming incoming_;  ///< the message being received (its arrays keep their capacity)
   std::vector<double> row_;
 };
 

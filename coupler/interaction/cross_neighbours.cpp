@@ -34,8 +34,6 @@ void CrossNeighbours<D>::update(const OverlapPoints& soil, const OverlapPoints& 
   support_ = support;
   box_ = box;
   soil_count_ = soil.size;
-  soil_position_ = soil.position;
-  water_position_ = water.position;
   if (search_now) search(soil, water);
 }
 
@@ -63,6 +61,7 @@ void CrossNeighbours<D>::search(const OverlapPoints& soil, const OverlapPoints& 
   cell_of_particle_.resize(n);
   candidate_start_.assign(water.size + 1, 0);
   candidate_.clear();
+  max_candidate_count_ = 0;
   if (n == 0) return;
   setup_grid(soil.position, n);
   const std::int64_t cell_count = grid_.cell_count;
@@ -91,6 +90,7 @@ void CrossNeighbours<D>::search(const OverlapPoints& soil, const OverlapPoints& 
                [&](std::int32_t i) { candidate_.push_back(i); });
     std::sort(candidate_.begin() + static_cast<std::ptrdiff_t>(first), candidate_.end());
     candidate_start_[a + 1] = static_cast<std::int32_t>(candidate_.size());
+    max_candidate_count_ = std::max(max_candidate_count_, candidate_.size() - first);
   }
 }
 

@@ -7,10 +7,10 @@
 //
 // Verlet skin (as sph/neighbour_list.h): the cell search collects, per water particle, the soil
 // particles within support + skin (candidates); later steps reuse them while both overlap sets
-// hold the same particles in the same order (ids) and none moved more than skin/2 since, and only
-// test the candidates' current distances. Candidates are in soil index order, so the sums over
-// them do not depend on the step of the last search (a resumed run sums like an uninterrupted
-// one). Buffers are reused: no allocation in steady state.
+// hold the same particles in the same order (ids) and none moved more than skin/2 since; the
+// caller evaluates the candidates' current distances. Candidates are in soil index order, so the
+// sums over them do not depend on the step of the last search (a resumed run sums like an
+// uninterrupted one). Buffers are reused: no allocation in steady state.
 #pragma once
 
 #include <cmath>
@@ -50,13 +50,17 @@ class CrossNeighbours {
   /// Cell searches so far (the other update() calls reused the candidates).
   std::uint64_t search_count() const { return search_count_; }
 
-  /// Calls visit(i, x_ws, r) for every candidate soil particle i (index into the soil set) of
-  /// water particle `a`, with x_ws = x_a - x_i (minimum image) and r = |x_ws|, at the current
-  /// positions of the sets given to the last update(). Every soil particle within r < support is
-  /// visited; so are a few up to support + skin (no data-dependent jump per candidate): kernels
-  /// vanish there, and the caller counts pairs with r < support().
-  template <class Visit>
-  void for_each_candidate(std::size_t a, Visit&& visit) const;
+  /// The candidate soil particles of water particle `a`: indices into the soil set, ascending.
+  /// Every soil particle within r < support is one; so are a few up to support + skin (kernels
+  /// vanish there, and the caller counts pairs with r < support()).
+  const std::int32_t* candidates(std::size_t a) const {
+    return candidate_.data() + candidate_start_[a];
+  }
+  std::size_t candidate_count(std::size_t a) const {
+    return static_cast<std::size_t>(candidate_start_[a + 1] - candidate_start_[a]);
+  }
+  /// The largest candidate_count() of the last search.
+  std::size_t max_candidate_count() const { return max_candidate_count_; }
 
  private:
   bool needs_search(const OverlapPoints& soil, const OverlapPoints& water, double support,
@@ -71,8 +75,7 @@ class CrossNeighbours {
   bool searched_ = false;
   std::uint64_t search_count_ = 0;
   std::size_t soil_count_ = 0;
-  const double* soil_position_ = nullptr;   ///< current soil positions (last update())
-  const double* water_position_ = nullptr;  ///< current water positions (last update())
+  std::size_t max_candidate_count_ = 0;
   // the last search
   std::vector<std::int64_t> searched_soil_id_, searched_water_id_;
   std::vector<double> searched_soil_position_, searched_water_position_;
@@ -84,18 +87,6 @@ class CrossNeighbours {
   std::vector<std::int32_t> candidate_start_;  ///< per water particle + 1
   std::vector<std::int32_t> candidate_;        ///< soil indices, ascending per water particle
 };
-
-template <int D>
-template <class Visit>
-void CrossNeighbours<D>::for_each_candidate(std::size_t a, Visit&& visit) const {
-  const sph::Vec<D> x_a = Eigen::Map<const sph::Vec<D>>(water_position_ + a * D);
-  for (std::int32_t c = candidate_start_[a]; c < candidate_start_[a + 1]; ++c) {
-    const std::int32_t i = candidate_[c];
-    sph::Vec<D> dx = x_a - Eigen::Map<const sph::Vec<D>>(soil_position_ + std::size_t(i) * D);
-    box_.minimum_image(dx);
-    visit(i, dx, dx.norm());
-  }
-}
 
 template <int D>
 template <class Collect>

@@ -89,27 +89,34 @@ class SoilWaterSums final : public InteractionEngine {
   }
 
  private:
+  /// What the pair loop reads of one soil particle, in one cache line (2D): the random access
+  /// per pair then touches one line instead of one per array.
+  struct SoilPairData {
+    Vec position;
+    Vec velocity;
+    double volume = 0.0;
+    double a = 0.0, b = 0.0;  ///< gamma_w a, gamma_w b of eq. 13 (0 where no seepage acts)
+    bool active = false;      ///< a seepage force acts (forces asked and the law is not "none")
+  };
+
   /// Copies what the pair loop needs of each soil particle (in the soil set's order).
   void gather_soil(const coupling::StepState& soil, bool forces) {
     const std::size_t n = grid_.soil_size();
-    soil_velocity_.resize(n);
-    soil_volume_.resize(n);
-    soil_a_.resize(n);
-    soil_b_.resize(n);
-    soil_active_.resize(n);
+    soil_.resize(n);
     const std::int64_t count = static_cast<std::int64_t>(n);
 #pragma omp parallel for schedule(static) if (count >= kParallelFrom) num_threads(threads())
     for (std::int64_t s = 0; s < count; ++s) {
       const std::size_t i = static_cast<std::size_t>(s);
-      soil_velocity_[s] = Eigen::Map<const Vec>(soil.overlap_velocity.data() + i * D);
-      soil_volume_[s] = soil.overlap_mass[i] / soil.overlap_density[i];
+      SoilPairData& d = soil_[i];
+      d.position = Eigen::Map<const Vec>(soil.overlap_position.data() + i * D);
+      d.velocity = Eigen::Map<const Vec>(soil.overlap_velocity.data() + i * D);
+      d.volume = soil.overlap_mass[i] / soil.overlap_density[i];
       const SeepageLaw& law = p_.materials[soil.overlap_material[i]].law;
-      soil_active_[s] = forces && law.active();
-      const soil::SeepageCoefficients c = soil_active_[s]
-                                              ? law.coefficients(soil.overlap_porosity[i])
-                                              : soil::SeepageCoefficients{};
-      soil_a_[s] = p_.unit_weight_water * c.a;
-      soil_b_[s] = p_.unit_weight_water * c.b;
+      d.active = forces && law.active();
+      const soil::SeepageCoefficients c =
+          d.active ? law.coefficients(soil.overlap_porosity[i]) : soil::SeepageCoefficients{};
+      d.a = p_.unit_weight_water * c.a;
+      d.b = p_.unit_weight_water * c.b;
     }
   }
 
@@ -122,7 +129,12 @@ class SoilWaterSums final : public InteractionEngine {
     const std::int64_t n_water = static_cast<std::int64_t>(water.overlap_id.size());
     const std::size_t soil_values = grid_.soil_size() * kStride;
     const int max_threads = threads();
-    if (static_cast<int>(partial_.size()) < max_threads) partial_.resize(max_threads);
+    if (static_cast<int>(partial_.size()) < max_threads) {
+      partial_.resize(max_threads);
+      pair_r_.resize(max_threads);
+      pair_w_.resize(max_threads);
+    }
+    const std::size_t max_candidates = grid_.max_candidate_count();
     if (forces) {
       out.water_acceleration.resize(water.overlap_id.size() * D);
     } else {
@@ -145,28 +157,47 @@ class SoilWaterSums final : public InteractionEngine {
       threads_used_ = omp_get_num_threads();
       std::vector<double>& acc = partial_[t];
       acc.assign(soil_values, 0.0);
+      // One water particle's candidates at a time: distances, kernel values, then the sums.
+      std::vector<double>& r = pair_r_[t];
+      std::vector<double>& w = pair_w_[t];
+      r.resize(max_candidates);
+      w.resize(max_candidates);
 #pragma omp for schedule(static)
       for (std::int64_t a = 0; a < n_water; ++a) {
+        const std::size_t count = grid_.candidate_count(a);
+        const std::int32_t* soil_index = grid_.candidates(a);
+        const Vec x_a = Eigen::Map<const Vec>(water.overlap_position.data() + a * D);
+        for (std::size_t c = 0; c < count; ++c) {
+          Vec dx = x_a - soil_[soil_index[c]].position;
+          box_.minimum_image(dx);
+          r[c] = dx.squaredNorm();
+        }
+        std::size_t near = 0;
+        for (std::size_t c = 0; c < count; ++c) {  // vectorises: no data-dependent branch
+          r[c] = std::sqrt(r[c]);
+          w[c] = kernel_.w(r[c]);  // 0 beyond the support
+          near += r[c] < support;
+        }
+        pairs += near;
         const Vec v_a = Eigen::Map<const Vec>(water.overlap_velocity.data() + a * D);
         const double rho_a = water.overlap_density[a];
         const double volume_a = water.overlap_mass[a] / rho_a;
         Vec sum = Vec::Zero();  // sum_i V_i f_ia W_ia
         double rate_sum = 0.0;  // sum_i V_i c_ia W_ia
-        grid_.for_each_candidate(a, [&](std::int32_t s, const Vec&, double r) {
-          const double w = kernel_.w(r);  // 0 beyond the support
-          double* soil_sums = acc.data() + static_cast<std::size_t>(s) * kStride;
-          soil_sums[D] += volume_a * w;
-          pairs += r < support;
-          if (!soil_active_[s]) return;
-          const Vec v_r = v_a - soil_velocity_[s];
-          const Vec f = seepage_force<D>(soil_a_[s], soil_b_[s], v_r);
-          for (int k = 0; k < D; ++k) soil_sums[k] += volume_a * w * f[k];
-          sum += (soil_volume_[s] * w) * f;
-          if (!rates) return;
-          const double c = seepage_rate_coefficient<D>(soil_a_[s], soil_b_[s], v_r);
-          soil_sums[D + 1] += volume_a * w * c;
-          rate_sum += soil_volume_[s] * w * c;
-        });
+        for (std::size_t c = 0; c < count; ++c) {
+          const SoilPairData& soil_i = soil_[soil_index[c]];
+          double* soil_sums = acc.data() + static_cast<std::size_t>(soil_index[c]) * kStride;
+          soil_sums[D] += volume_a * w[c];
+          if (!soil_i.active) continue;
+          const Vec v_r = v_a - soil_i.velocity;
+          const Vec f = seepage_force<D>(soil_i.a, soil_i.b, v_r);
+          for (int k = 0; k < D; ++k) soil_sums[k] += volume_a * w[c] * f[k];
+          sum += (soil_i.volume * w[c]) * f;
+          if (!rates) continue;
+          const double rate = seepage_rate_coefficient<D>(soil_i.a, soil_i.b, v_r);
+          soil_sums[D + 1] += volume_a * w[c] * rate;
+          rate_sum += soil_i.volume * w[c] * rate;
+        }
         if (!forces) continue;
         const Vec acceleration = -sum / rho_a;
         if (rates) out.water_rate[a] = rate_sum / rho_a;
@@ -241,10 +272,9 @@ class SoilWaterSums final : public InteractionEngine {
   Kernel kernel_;
   sph::DomainBox<D> box_;
   CrossNeighbours<D> grid_;
-  std::vector<Vec> soil_velocity_;
-  std::vector<double> soil_volume_, soil_a_, soil_b_;
-  std::vector<unsigned char> soil_active_;
-  std::vector<std::vector<double>> partial_;  ///< per thread: (F_i, s_i) per soil particle
+  std::vector<SoilPairData> soil_;
+  std::vector<std::vector<double>> partial_;          ///< per thread: (F_i, s_i) per soil particle
+  std::vector<std::vector<double>> pair_r_, pair_w_;  ///< per thread: r, W of one particle's pairs
   int threads_used_ = 1;
 };
 
