@@ -2,7 +2,8 @@
 // Runs a case at about 30,000 particles for a fixed number of steps (dt pinned by dt0 below every
 // stability limit) and prints particle-steps per second, the share of the solver's wall time spent
 // in the coupler round trip, and the peak memory of the largest process. Cases: dam_break (water
-// solver) and granular_collapse (soil solver).
+// solver), granular_collapse (soil solver) and fluidized_bed (coupled: also the coupling overhead
+// and the CPU budget).
 //   porosph_bench [--case dam_break] [--particles 30000] [--steps 400] [--threads N] [--keep DIR]
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -17,6 +18,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <thread>
 
 #ifndef POROSPH_SOURCE_DIR
 #define POROSPH_SOURCE_DIR "."
@@ -32,8 +34,13 @@ std::string executable_dir() {
 /// coupling overhead: the share of the wall time the slower solver spent outside its own physics
 /// (serialising, ZeroMQ, the coupler's interaction, waiting) - the solvers run in parallel, so the
 /// slower one's physics is the step's critical path.
+///
+/// The CPU budget beside it: the CPU time of every process of the run (the coupler, both solvers,
+/// ZeroMQ's I/O threads) against cores x the slower solver's physics. Where the whole run needs
+/// more CPU time than the cores give while that solver computes, the wall time exceeds its physics
+/// by at least the excess, however well the work overlaps: a lower bound of the overhead.
 void print_coupled(const nlohmann::json& run, const std::string& case_name, double wall,
-                   double peak_mib) {
+                   double peak_mib, double cpu_seconds) {
   const double steps = run.at("steps").get<double>();
   double particles = 0.0, critical_physics = 0.0;
   std::printf("%-44s %12s\n", "figure", "value");
@@ -60,6 +67,10 @@ void print_coupled(const nlohmann::json& run, const std::string& case_name, doub
               particles * steps / run_wall);
   std::printf("%-44s %11.1f%%\n", "coupling overhead share of step time",
               100.0 * (1.0 - critical_physics / run_wall));
+  const double cores = std::max(1u, std::thread::hardware_concurrency());
+  std::printf("%-44s %12.2f\n", "CPU time of all processes [s]", cpu_seconds);
+  std::printf("%-44s %11.1f%%\n", "overhead bound from the CPU budget",
+              100.0 * std::max(0.0, 1.0 - cores * critical_physics / cpu_seconds));
   std::printf("%-44s %12.2f\n", "whole run wall time incl. start [s]", wall);
   std::printf("%-44s %12.1f\n", "peak memory of the largest process [MiB]", peak_mib);
 }
@@ -132,7 +143,9 @@ int main(int argc, char** argv) {
   rusage usage{};
   getrusage(RUSAGE_CHILDREN, &usage);
   if (coupled) {
-    print_coupled(run, case_name, wall, usage.ru_maxrss / 1024.0);
+    const auto seconds = [](const timeval& t) { return t.tv_sec + 1e-6 * t.tv_usec; };
+    print_coupled(run, case_name, wall, usage.ru_maxrss / 1024.0,
+                  seconds(usage.ru_utime) + seconds(usage.ru_stime));
     if (keep.empty()) std::filesystem::remove_all(out);
     return 0;
   }
