@@ -95,8 +95,8 @@ class SoilWaterSums final : public InteractionEngine {
     Vec position;
     Vec velocity;
     double volume = 0.0;
-    double a = 0.0, b = 0.0;  ///< gamma_w a, gamma_w b of eq. 13 (0 where no seepage acts)
-    bool active = false;      ///< a seepage force acts (forces asked and the law is not "none")
+    double a = 0.0, b = 0.0;  ///< gamma_w a, gamma_w b of eq. 13: 0 where no seepage acts (the
+                              ///< law is "none", or only the saturation is asked)
   };
 
   /// Copies what the pair loop needs of each soil particle (in the soil set's order).
@@ -112,9 +112,9 @@ class SoilWaterSums final : public InteractionEngine {
       d.velocity = Eigen::Map<const Vec>(soil.overlap_velocity.data() + i * D);
       d.volume = soil.overlap_mass[i] / soil.overlap_density[i];
       const SeepageLaw& law = p_.materials[soil.overlap_material[i]].law;
-      d.active = forces && law.active();
-      const soil::SeepageCoefficients c =
-          d.active ? law.coefficients(soil.overlap_porosity[i]) : soil::SeepageCoefficients{};
+      const soil::SeepageCoefficients c = forces && law.active()
+                                              ? law.coefficients(soil.overlap_porosity[i])
+                                              : soil::SeepageCoefficients{};
       d.a = p_.unit_weight_water * c.a;
       d.b = p_.unit_weight_water * c.b;
     }
@@ -185,17 +185,20 @@ class SoilWaterSums final : public InteractionEngine {
         Vec sum = Vec::Zero();  // sum_i V_i f_ia W_ia
         double rate_sum = 0.0;  // sum_i V_i c_ia W_ia
         for (std::size_t c = 0; c < count; ++c) {
+          // No branch per pair: where no seepage acts a = b = 0, so f and its rate vanish, and
+          // the rate column is summed also when no rates are asked (soil_pass ignores it then).
           const SoilPairData& soil_i = soil_[soil_index[c]];
-          double* soil_sums = acc.data() + static_cast<std::size_t>(soil_index[c]) * kStride;
-          soil_sums[D] += volume_a * w[c];
-          if (!soil_i.active) continue;
           const Vec v_r = v_a - soil_i.velocity;
           const Vec f = seepage_force<D>(soil_i.a, soil_i.b, v_r);
-          for (int k = 0; k < D; ++k) soil_sums[k] += volume_a * w[c] * f[k];
-          sum += (soil_i.volume * w[c]) * f;
-          if (!rates) continue;
           const double rate = seepage_rate_coefficient<D>(soil_i.a, soil_i.b, v_r);
-          soil_sums[D + 1] += volume_a * w[c] * rate;
+          const double weight = volume_a * w[c];
+          double add[kStride];  // one vector add into the soil particle's row
+          for (int k = 0; k < D; ++k) add[k] = weight * f[k];
+          add[D] = weight;
+          add[D + 1] = weight * rate;
+          double* soil_sums = acc.data() + static_cast<std::size_t>(soil_index[c]) * kStride;
+          for (int k = 0; k < kStride; ++k) soil_sums[k] += add[k];
+          sum += (soil_i.volume * w[c]) * f;
           rate_sum += soil_i.volume * w[c] * rate;
         }
         if (!forces) continue;
