@@ -208,22 +208,16 @@ void CoupledStepLoop::send_commands(double dt, bool write_output, std::uint32_t 
     command.other_region_max.clear();
     if (interaction_) {
       const bool soil = phase == "soil";
-      const std::vector<double>& acceleration =
-          soil ? interaction_->soil_acceleration() : interaction_->water_acceleration();
-      command.interaction_acceleration.assign(acceleration.begin(), acceleration.end());
-      const std::vector<double>& rate =
-          soil ? interaction_->soil_rate() : interaction_->water_rate();
       // Implicit only where the explicit drag nears its stability limit (lambda dt >=
       // coupling.implicit_drag_from); elsewhere explicit, which conserves momentum pair by pair.
+      const std::vector<double>& rate =
+          soil ? interaction_->soil_rate() : interaction_->water_rate();
       command.interaction_rate.resize(rate.size());
       for (std::size_t i = 0; i < rate.size(); ++i) {
         command.interaction_rate[i] =
             rate[i] * dt >= scene_.coupling.implicit_drag_from ? rate[i] : 0.0;
       }
-      if (soil) {
-        command.saturation.assign(interaction_->saturation().begin(),
-                                  interaction_->saturation().end());
-      }
+      interaction_->hand_over(soil, command.interaction_acceleration, command.saturation);
       overlap_region_for(states_.at(soil ? "water" : "soil"), scene_, command.other_region_min,
                          command.other_region_max);
     }

@@ -82,6 +82,13 @@ class SoilWaterInteraction {
   const std::vector<double>& saturation() const { return out_.saturation; }
   const std::vector<double>& water_rate() const { return out_.water_rate; }
   const std::vector<double>& soil_rate() const { return out_.soil_rate; }
+  /// Hands the phase's accelerations (and for the soil its saturation) of the last compute to a
+  /// step command by swapping buffers, no copy: afterwards those outputs hold the command's old
+  /// arrays until the next compute() overwrites them.
+  void hand_over(bool soil, std::vector<double>& acceleration, std::vector<double>& saturation) {
+    acceleration.swap(soil ? out_.soil_acceleration : out_.water_acceleration);
+    if (soil) saturation.swap(out_.saturation);
+  }
   /// The interaction terms of the scene (run.json interaction.terms; interaction_terms()).
   const std::vector<std::string>& terms() const { return terms_; }
 
