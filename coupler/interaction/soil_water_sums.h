@@ -61,6 +61,8 @@ class SoilWaterSums final : public InteractionEngine {
   /// microseconds, far more on cores shared with the solver processes, and small sets (the first
   /// contact, the test dummies) do not need it.
   static constexpr std::int64_t kParallelFrom = 2048;
+  /// Values per soil particle in the per-thread sums: F_i (D components), s_i, lambda_i rho_i^s.
+  static constexpr int kStride = D + 2;
 
   SoilWaterSums(InteractionParameters parameters, const sph::DomainBox<D>& box)
       : p_(std::move(parameters)), kernel_(p_.h), box_(box) {
@@ -124,7 +126,6 @@ class SoilWaterSums final : public InteractionEngine {
   /// the number of pairs.
   std::size_t water_pass(const coupling::StepState& water, bool forces, InteractionOutputs& out,
                          double& max_a2) {
-    constexpr int kStride = D + 2;  // per soil particle: F_i (D components), s_i, lambda_i rho_i^s
     const bool rates = forces && p_.implicit_drag;
     const std::int64_t n_water = static_cast<std::int64_t>(water.overlap_id.size());
     const std::size_t soil_values = grid_.soil_size() * kStride;
@@ -221,7 +222,6 @@ class SoilWaterSums final : public InteractionEngine {
   /// Reduces the per-thread soil sums: saturation, rho^s, soil accelerations, force on the soil.
   void soil_pass(const coupling::StepState& soil, bool forces, InteractionOutputs& out,
                  double& max_a2) {
-    constexpr int kStride = D + 2;
     const bool rates = forces && p_.implicit_drag;
     const std::int64_t n = static_cast<std::int64_t>(grid_.soil_size());
     out.saturation.resize(n);
@@ -276,7 +276,7 @@ class SoilWaterSums final : public InteractionEngine {
   sph::DomainBox<D> box_;
   CrossNeighbours<D> grid_;
   std::vector<SoilPairData> soil_;
-  std::vector<std::vector<double>> partial_;          ///< per thread: (F_i, s_i) per soil particle
+  std::vector<std::vector<double>> partial_;  ///< per thread: kStride sums per soil particle
   std::vector<std::vector<double>> pair_r_, pair_w_;  ///< per thread: r, W of one particle's pairs
   int threads_used_ = 1;
 };
