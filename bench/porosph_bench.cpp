@@ -62,6 +62,8 @@ void print_coupled(const nlohmann::json& run, const std::string& case_name, doub
               run.at("interaction").at("pairs").at("last").get<double>());
   std::printf("%-44s %12.2f\n", "coupler interaction wall time [s]",
               run.at("interaction").at("seconds").get<double>());
+  std::printf("%-44s %12.0f\n", "message bytes per step (states + commands)",
+              run.at("transport").at("bytes_per_step").get<double>());
   std::printf("%-44s %12.2f\n", "run wall time (run.json) [s]", run_wall);
   std::printf("%-44s %12.3e\n", "particle-steps/s (both phases, whole run)",
               particles * steps / run_wall);

@@ -175,7 +175,9 @@ std::string coupler_state_json(const RunRecord& r, const LoopState& loop) {
                         {"impulse_magnitude_sum", exact(r.ledger.impulse_magnitude_sum)}}},
                       {"interaction", interaction_state(r.interaction)},
                       {"observables", exact_map(r.observables)},
-                      {"resumes", r.resumes}}}};
+                      {"resumes", r.resumes},
+                      {"transport_bytes_received", r.transport_bytes_received},
+                      {"transport_bytes_sent", r.transport_bytes_sent}}}};
   return out.dump(1) + "\n";
 }
 
@@ -213,6 +215,10 @@ void restore_coupler_state(const std::string& text, const std::string& source, R
     r.ledger.impulse_magnitude_sum = exact_of(ledger.at("impulse_magnitude_sum"));
     restore_interaction(j.at("interaction"), r.interaction);
     r.observables = exact_map_of(j.at("observables"));
+    if (j.contains("transport_bytes_received")) {  // absent in checkpoints before 2026-12-02
+      r.transport_bytes_received = j.at("transport_bytes_received").get<std::uint64_t>();
+      r.transport_bytes_sent = j.at("transport_bytes_sent").get<std::uint64_t>();
+    }
     r.resumes = j.at("resumes").get<std::uint32_t>();
   } catch (const std::exception& e) {
     throw std::runtime_error(source + ": not a coupler checkpoint: " + e.what());

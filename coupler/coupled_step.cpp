@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "coupler/interaction/overlap_region.h"
+#include "proto/state_delta.h"
 #include "scene/timeseries_columns.h"
 
 namespace porosph::coupler {
@@ -41,7 +42,11 @@ CoupledStepLoop::CoupledStepLoop(const scene::Scene& scene, SolverHub& hub, RunR
       checkpoints_(scene, out_dir, scene.phases(), resumed ? record.checkpoint_index : 0,
                    record.time),
       phases_(scene.phases()),
-      controller_(scene.run.dt0, scene.run.dt_smoothing) {
+      controller_(scene.run.dt0, scene.run.dt_smoothing),
+      hub_bytes_received_start_(hub.bytes_received()),
+      hub_bytes_sent_start_(hub.bytes_sent()),
+      record_bytes_received_start_(record.transport_bytes_received),
+      record_bytes_sent_start_(record.transport_bytes_sent) {
   if (scene.has_water() && scene.has_soil()) {
     // The solvers compute their own rates while the coupler sums the interaction
     // (proto/solver_runtime.h): leave them their cores. Threads beyond the cores only wait.
@@ -147,7 +152,9 @@ void CoupledStepLoop::absorb_state(const std::string& phase, coupling::StepState
         << reported.mass << ", dt limit " << state.dt_limit << ")";
     throw std::runtime_error(msg.str());
   }
-  std::swap(states_[phase], state);  // no copy of the particle arrays
+  // Completes the state from the previous one where the message left parts out (a delta); arrays
+  // sent whole are swapped in, not copied.
+  coupling::apply_state_delta(states_[phase], state, scene_.run.dimension, phase);
   const auto& d = states_[phase].diagnostics;
   PhaseRecord& phase_record = record_.phases[phase];
   if (record_.steps == 0) phase_record.initial = d;
@@ -309,6 +316,10 @@ void CoupledStepLoop::run(ProgressLine& progress) {
       loop_.outputs_pending = true;
     }
     record_.coupler_seconds += seconds_since(work_start);
+    record_.transport_bytes_received =
+        record_bytes_received_start_ + (hub_.bytes_received() - hub_bytes_received_start_);
+    record_.transport_bytes_sent =
+        record_bytes_sent_start_ + (hub_.bytes_sent() - hub_bytes_sent_start_);
     if (stop) break;
     record_.time += dt;
     record_.steps += 1;

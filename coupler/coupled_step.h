@@ -46,8 +46,9 @@ class CoupledStepLoop {
   /// Evaluates the interaction for the collected states (scenes with both phases) and books its
   /// statistics; returns its dt limit (infinity without interaction).
   double compute_interaction();
-  /// Checks `state` and keeps it as the phase's current state (swapped in: `state` is left with
-  /// the previous one, whose storage the next receive reuses).
+  /// Checks `state` and keeps it as the phase's current state, completed from the previous one
+  /// where the message left parts out (proto/state_delta.h). Arrays sent whole are swapped in:
+  /// `state` keeps storage the next receive reuses.
   void absorb_state(const std::string& phase, coupling::StepState& state);
   void append_timeseries_row(double dt);
   void send_commands(double dt, bool write_output, std::uint32_t output_index, bool stop,
@@ -81,6 +82,9 @@ class CoupledStepLoop {
   std::map<std::string, coupling::StepCommand> commands_;
   std::map<std::string, bool> received_;  ///< which phases reported this step
   Incoming incoming_;  ///< the message being received (its arrays keep their capacity)
+  /// The hub's byte counts and the record's when the loop started (the record adds the loop's).
+  std::uint64_t hub_bytes_received_start_ = 0, hub_bytes_sent_start_ = 0;
+  std::uint64_t record_bytes_received_start_ = 0, record_bytes_sent_start_ = 0;
   std::vector<double> row_;
 };
 

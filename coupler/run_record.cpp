@@ -167,6 +167,11 @@ void write_run_json(const std::string& path, const RunRecord& r) {
                    {"impulse_magnitude_sum", number(r.ledger.impulse_magnitude_sum)},
                    {"relative_imbalance", number(r.ledger.relative_imbalance())}};
   if (r.interaction.active) out["interaction"] = interaction_json(r.interaction);
+  out["transport"] = {
+      {"bytes_received", r.transport_bytes_received},
+      {"bytes_sent", r.transport_bytes_sent},
+      {"bytes_per_step",
+       number(static_cast<double>(r.transport_bytes_received + r.transport_bytes_sent) / steps)}};
   json observables = json::object();
   for (const auto& [name, value] : r.observables) observables[name] = number(value);
   out["observables"] = observables;

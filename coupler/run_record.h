@@ -83,6 +83,9 @@ struct RunRecord {
   InteractionRecord interaction;
   std::map<std::string, double> observables;  ///< latest value of every observable
   std::uint32_t resumes = 0;  ///< times this run was resumed from a checkpoint (--resume)
+  /// Payload bytes of the messages of the step loop (states, errors, goodbyes received; commands
+  /// sent), without ZeroMQ's framing: the coupling's data volume.
+  std::uint64_t transport_bytes_received = 0, transport_bytes_sent = 0;
   /// The latest checkpoint: index (0: none yet), simulated time and step.
   std::uint32_t checkpoint_index = 0;
   double checkpoint_time = 0;

@@ -15,6 +15,7 @@
 
 #include "proto/porosph.pb.h"
 #include "proto/wire_convert.h"
+#include "proto/wire_message.h"
 
 namespace porosph::coupler {
 namespace {
@@ -63,8 +64,8 @@ struct SolverHub::Impl {
   wire::Envelope outgoing;
   zmq::message_t peer_frame;
   zmq::message_t payload_frame;
-  std::string send_buffer;
   double codec_seconds = 0;
+  std::uint64_t bytes_received = 0, bytes_sent = 0;
 
   /// Waits until a message is readable or the deadline passes (signals do not cut the wait short).
   bool wait_readable(Clock::time_point deadline) {
@@ -92,6 +93,7 @@ struct SolverHub::Impl {
       return Frames::None;
     }
     (void)socket.recv(payload_frame, zmq::recv_flags::none);
+    bytes_received += payload_frame.size();
     Frames result = Frames::WellFormed;
     while (payload_frame.more()) {  // our DEALERs send one frame; drain anything longer
       result = Frames::Malformed;
@@ -131,12 +133,16 @@ struct SolverHub::Impl {
     }
   }
 
+  bool send_payload(zmq::message_t frame) {
+    bytes_sent += frame.size();
+    return socket.send(frame, zmq::send_flags::none).has_value();
+  }
+
   void send_outgoing(const std::string& peer, const std::string& phase) {
     const auto start = Clock::now();
-    outgoing.SerializeToString(&send_buffer);
     try {
       if (!socket.send(zmq::buffer(peer), zmq::send_flags::sndmore) ||
-          !socket.send(zmq::buffer(send_buffer), zmq::send_flags::none)) {
+          !send_payload(wire::to_frame(outgoing))) {
         throw std::runtime_error("cannot send to the " + phase + " solver: it stopped reading");
       }
     } catch (const zmq::error_t& e) {
@@ -275,5 +281,7 @@ void SolverHub::send_shutdown(const std::string& phase, const std::string& reaso
 }
 
 double SolverHub::codec_seconds() const { return impl_->codec_seconds; }
+std::uint64_t SolverHub::bytes_received() const { return impl_->bytes_received; }
+std::uint64_t SolverHub::bytes_sent() const { return impl_->bytes_sent; }
 
 }  // namespace porosph::coupler

@@ -3,6 +3,7 @@
 // works with the plain structs of proto/coupling_client.h.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -63,6 +64,9 @@ class SolverHub {
 
   /// Seconds spent serialising, sending and parsing (excluding waiting).
   double codec_seconds() const;
+  /// Payload bytes (serialised Envelopes, without ZeroMQ's framing) received / sent so far.
+  std::uint64_t bytes_received() const;
+  std::uint64_t bytes_sent() const;
 
  private:
   struct Impl;

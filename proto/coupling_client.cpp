@@ -11,7 +11,9 @@
 #include <zmq.hpp>
 
 #include "proto/porosph.pb.h"
+#include "proto/state_delta.h"
 #include "proto/wire_convert.h"
+#include "proto/wire_message.h"
 
 namespace porosph::coupling {
 namespace {
@@ -45,16 +47,15 @@ struct CouplingClient::Impl {
   wire::Envelope incoming;            // any body except commands
   wire::StepCommand command_message;  // commands: parsed here, keeping the arrays' capacity
   wire::Envelope::BodyCase received = wire::Envelope::BODY_NOT_SET;
-  std::string send_buffer;
   zmq::message_t reply;
+  StateDeltaEncoder state_delta;  ///< what each state may leave out (proto/state_delta.h)
   double communication_seconds = 0;
   std::uint64_t last_sent_step = 0;  ///< step of the last state sent (for messages)
 
   /// Serialises `outgoing` and queues it (the DEALER queues while the coupler is not yet
   /// reachable).
   void send_outgoing(zmq::send_flags flags) {
-    outgoing.SerializeToString(&send_buffer);
-    if (!socket.send(zmq::buffer(send_buffer), flags)) {
+    if (!socket.send(wire::to_frame(outgoing), flags)) {
       throw CouplingError("cannot send to the coupler at " + endpoint + ": send queue is full");
     }
   }
@@ -154,7 +155,7 @@ const StepCommand& CouplingClient::exchange(const StepState& state) {
 void CouplingClient::send_state(const StepState& state) {
   Impl& d = *impl_;
   const auto start = Clock::now();
-  wire::to_wire(state, *d.outgoing.mutable_state());
+  wire::to_wire(state, d.state_delta.next(state), *d.outgoing.mutable_state());
   d.send_outgoing(zmq::send_flags::dontwait);
   d.last_sent_step = state.step;
   d.communication_seconds += std::chrono::duration<double>(Clock::now() - start).count();

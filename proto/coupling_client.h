@@ -53,6 +53,13 @@ struct Diagnostics {
   std::vector<std::string> terms;
 };
 
+/// What a received state message left out (proto/state_delta.h). Solvers leave it at its
+/// default: the client computes it when it sends; the coupler's hub fills it when it receives.
+struct StateDelta {
+  bool same_set = false;             ///< ids, masses, materials as in the previous state
+  std::uint32_t unchanged_tail = 0;  ///< last K particles' per-step values as before
+};
+
 /// One solver's report after computing its accelerations for the current state.
 /// Overlap arrays are flattened row-major (n*D for vectors).
 struct StepState {
@@ -67,6 +74,7 @@ struct StepState {
   Diagnostics diagnostics;
   /// Index of the checkpoint written after the last advance (asked by the last command); 0: none.
   std::uint32_t checkpoint_written = 0;
+  StateDelta delta;  ///< wire level: what the message left out (see StateDelta)
 
   /// Empties every overlap array (keeping their capacity: no allocation in steady state).
   void clear_overlap() {

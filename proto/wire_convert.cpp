@@ -3,6 +3,7 @@
 #include <google/protobuf/io/coded_stream.h>
 #include <google/protobuf/wire_format_lite.h>
 
+#include <algorithm>
 #include <iterator>
 #include <limits>
 
@@ -149,24 +150,45 @@ bool parse_envelope(const void* data, std::size_t size, StepCommand& hot, Envelo
   return parse_envelope_into(data, size, Envelope::kCommandFieldNumber, hot, envelope, body);
 }
 
-void to_wire(const coupling::StepState& in, StepState& out) {
+void to_wire(const coupling::StepState& in, const coupling::StateDelta& delta, StepState& out) {
   out.set_step(in.step);
   out.set_time(in.time);
   out.set_dt_limit(in.dt_limit);
   out.set_dt_cfl(in.dt_cfl);
   out.set_dt_viscous(in.dt_viscous);
   out.set_dt_force(in.dt_force);
-  assign(out.mutable_overlap_id(), in.overlap_id);
-  assign(out.mutable_overlap_position(), in.overlap_position);
-  assign(out.mutable_overlap_velocity(), in.overlap_velocity);
-  assign(out.mutable_overlap_density(), in.overlap_density);
-  assign(out.mutable_overlap_mass(), in.overlap_mass);
-  assign(out.mutable_overlap_porosity(), in.overlap_porosity);
-  assign(out.mutable_overlap_material(), in.overlap_material);
+  out.set_overlap_same_set(delta.same_set);
+  out.set_overlap_unchanged_tail(delta.unchanged_tail);
+  const std::vector<std::int64_t> none_id;
+  const std::vector<double> none;
+  const std::vector<std::int32_t> none_material;
+  assign(out.mutable_overlap_id(), delta.same_set ? none_id : in.overlap_id);
+  assign(out.mutable_overlap_mass(), delta.same_set ? none : in.overlap_mass);
+  assign(out.mutable_overlap_material(), delta.same_set ? none_material : in.overlap_material);
+  // Without a tail the arrays go whole; with one (the encoder checked the sizes) n - K particles.
+  const std::size_t n = in.overlap_id.size();
+  const std::size_t moved = n - std::min<std::size_t>(n, delta.unchanged_tail);
+  const std::size_t d = n > 0 ? in.overlap_position.size() / n : 0;
+  const auto prefix = [&](google::protobuf::RepeatedField<double>* field,
+                          const std::vector<double>& values, std::size_t count) {
+    if (delta.unchanged_tail == 0 || values.empty()) {
+      assign(field, values);
+    } else {
+      field->Assign(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(count));
+    }
+  };
+  prefix(out.mutable_overlap_position(), in.overlap_position, moved * d);
+  prefix(out.mutable_overlap_velocity(), in.overlap_velocity, moved * d);
+  prefix(out.mutable_overlap_density(), in.overlap_density, moved);
+  prefix(out.mutable_overlap_porosity(), in.overlap_porosity, moved);
   assign(out.mutable_region_min(), in.region_min);
   assign(out.mutable_region_max(), in.region_max);
   to_wire(in.diagnostics, *out.mutable_diagnostics());
   out.set_checkpoint_written(in.checkpoint_written);
+}
+
+void to_wire(const coupling::StepState& in, StepState& out) {
+  to_wire(in, coupling::StateDelta{}, out);
 }
 
 void from_wire(const StepState& in, coupling::StepState& out) {
@@ -187,6 +209,8 @@ void from_wire(const StepState& in, coupling::StepState& out) {
   assign(out.region_max, in.region_max());
   from_wire(in.diagnostics(), out.diagnostics);
   out.checkpoint_written = in.checkpoint_written();
+  out.delta.same_set = in.overlap_same_set();
+  out.delta.unchanged_tail = in.overlap_unchanged_tail();
 }
 
 void to_wire(const coupling::StepCommand& in, StepCommand& out) {

@@ -22,6 +22,9 @@ bool parse_envelope(const void* data, std::size_t size, StepState& hot, Envelope
 bool parse_envelope(const void* data, std::size_t size, StepCommand& hot, Envelope& envelope,
                     Envelope::BodyCase& body);
 
+/// A state with what `delta` says the coupler already has left out (proto/state_delta.h).
+void to_wire(const coupling::StepState& in, const coupling::StateDelta& delta, StepState& out);
+/// A whole state (no delta).
 void to_wire(const coupling::StepState& in, StepState& out);
 void from_wire(const StepState& in, coupling::StepState& out);
 

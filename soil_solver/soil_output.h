@@ -20,9 +20,13 @@ namespace porosph::soil {
 
 /// The soil particles (free and fixed soil, not walls) inside [lo, hi] (empty bounds: none): their
 /// indices into `index` and their id, position, velocity, density, mass, porosity and material
-/// into `out`.
+/// into `out`. Fixed soil (a porous bed) reports its material's density and the mass
+/// reference density x `volume` it was created with: its soil_walls.h density is a boundary value
+/// of the soil's own stress sums, and the interaction needs only its volume m / rho, the same
+/// either way (to round-off). Constant values let the state deltas leave fixed particles out
+/// (proto/state_delta.h).
 template <int D>
-void fill_soil_overlap(const SoilParticles<D>& P, const std::vector<double>& lo,
+void fill_soil_overlap(const SoilParticles<D>& P, double volume, const std::vector<double>& lo,
                        const std::vector<double>& hi, std::vector<std::int32_t>& index,
                        coupling::StepState& out) {
   index.clear();
@@ -38,8 +42,9 @@ void fill_soil_overlap(const SoilParticles<D>& P, const std::vector<double>& lo,
     out.overlap_id.push_back(P.id[i]);
     for (int k = 0; k < D; ++k) out.overlap_position.push_back(x[k]);
     for (int k = 0; k < D; ++k) out.overlap_velocity.push_back(P.velocity[i][k]);
-    out.overlap_density.push_back(P.density[i]);
-    out.overlap_mass.push_back(P.mass[i]);
+    const bool fixed = i >= P.n_free;
+    out.overlap_density.push_back(fixed ? P.reference_density[i] : P.density[i]);
+    out.overlap_mass.push_back(fixed ? P.reference_density[i] * volume : P.mass[i]);
     out.overlap_porosity.push_back(P.porosity[i]);
     out.overlap_material.push_back(static_cast<std::int32_t>(P.material[i]));
   }

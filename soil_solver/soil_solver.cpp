@@ -196,7 +196,7 @@ void SoilSolver<D>::fill_state(coupling::StepState& out, const std::vector<doubl
   const SoilParticles<D>& P = particles_;
   out.step = step_;
   out.time = time_;
-  fill_soil_overlap(P, overlap_min, overlap_max, overlap_index_, out);
+  fill_soil_overlap(P, params_.volume, overlap_min, overlap_max, overlap_index_, out);
   fill_soil_diagnostics(P, out.region_min, out.region_max, out.diagnostics);
   // Reported before its rates are computed (solver_runtime.h): the CFL limit of the current
   // speeds, eq. 21 of the latest rates.
