@@ -16,17 +16,21 @@ import argparse
 import csv
 import json
 import os
+import shutil
 import subprocess
 import sys
+import tempfile
 
 import case_plots
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 
-def case(name, title, scene, check, overrides=(), extra=(), plot=None, notes=""):
+def case(name, title, scene, check, overrides=(), extra=(), plot=None, notes="", run_dir=None):
+    """run_dir: where the run lives relative to --runs (default: the case name); the long runs
+    of runs/long/ are read where they run."""
     return dict(name=name, title=title, scene=scene, check=check, overrides=list(overrides),
-                extra=list(extra), plot=plot, notes=notes)
+                extra=list(extra), plot=plot, notes=notes, run_dir=run_dir or name)
 
 
 HEAVE_GRID = [(26, 40), (29, 40), (29, 45), (32, 40), (35, 40)]
@@ -77,11 +81,69 @@ CASES = [
          overrides=["run.dp=0.005", "run.end_time=5.2", f"soil.materials[0].friction_angle={s}",
                     f"soil.materials[1].friction_angle={g}"])
     for (s, g) in HEAVE_GRID if (s, g) != (29, 40)
+] + [
+    # Long runs (runs/long/, checkpointed and resumed across sessions); a run still in progress
+    # is validated from a copy of what it has written so far and marked partial.
+    case("hydraulic_heave_dp2.5", "Hydraulic heave at the paper's resolution (dp 2.5 mm)",
+         "cases/hydraulic_heave/scene.toml", "hydraulic_heave",
+         overrides=["run.checkpoint_wall_minutes=5"], plot=case_plots.hydraulic_heave,
+         run_dir="../long/heave_dp2.5_v3",
+         notes="The scene's own resolution (CASES.md: dx 2.5 mm, 27,276 particles)."),
+    case("heave_alpha0.5", "Hydraulic heave, dp 5 mm, soil artificial viscosity alpha = beta = 0.5",
+         "cases/hydraulic_heave/scene.toml", "hydraulic_heave",
+         overrides=["run.dp=0.005", "soil.alpha=0.5", "soil.beta=0.5",
+                    "run.checkpoint_wall_minutes=5"], plot=case_plots.hydraulic_heave,
+         run_dir="../long/heave_dp5_alpha0.5_full",
+         notes="CASES.md's alpha = beta = 0.1 times 5: how much the failure time follows a "
+               "numerical parameter (docs/validation-studies.md)."),
+    case("heave_alpha1.0", "Hydraulic heave, dp 5 mm, soil artificial viscosity alpha = beta = 1.0",
+         "cases/hydraulic_heave/scene.toml", "hydraulic_heave",
+         overrides=["run.dp=0.005", "run.end_time=5.2", "soil.alpha=1.0", "soil.beta=1.0",
+                    "run.checkpoint_wall_minutes=5"], plot=case_plots.hydraulic_heave,
+         run_dir="../long/heave_dp5_alpha1.0", notes="CASES.md's alpha = beta = 0.1 times 10."),
+    case("rockfill_q19_long", "Rockfill core overtopping, Q = 19.36 l/s, towards steady state",
+         "cases/rockfill_overtopping/scene.toml", "rockfill_overtopping",
+         overrides=["run.dp=0.02", "run.end_time=120.2", "run.checkpoint_wall_minutes=10"],
+         plot=case_plots.rockfill, run_dir="../long/rockfill_q19_120s",
+         notes="dp 0.02 m, W = 2.5 m (assumed), to 120 s of inflow."),
+    case("rockfill_q30_long", "Rockfill core overtopping, Q = 30.45 l/s, towards steady state",
+         "cases/rockfill_overtopping/scene.toml", "rockfill_overtopping",
+         overrides=["run.dp=0.02", "run.end_time=120.2", "water.inflow[0].flow_rate=0.03045",
+                    "run.checkpoint_wall_minutes=5"],
+         plot=case_plots.rockfill, run_dir="../long/rockfill_q30_120s",
+         notes="dp 0.02 m, W = 2.5 m (assumed), to 120 s of inflow."),
+    case("rockfill_q19_w1.25", "Rockfill, Q = 19.36 l/s with the flume width halved (W = 1.25 m)",
+         "cases/rockfill_overtopping/scene.toml", "rockfill_overtopping",
+         overrides=["run.dp=0.02", "run.end_time=60.2", "water.inflow[0].cross_section=0.05",
+                    "run.checkpoint_wall_minutes=5"],
+         plot=case_plots.rockfill, run_dir="../long/rockfill_q19_cs0.05",
+         notes="W / 2: twice the discharge per metre."),
+    case("rockfill_q19_w5", "Rockfill, Q = 19.36 l/s with the flume width doubled (W = 5 m)",
+         "cases/rockfill_overtopping/scene.toml", "rockfill_overtopping",
+         overrides=["run.dp=0.02", "run.end_time=60.2", "water.inflow[0].cross_section=0.2",
+                    "run.checkpoint_wall_minutes=5"],
+         plot=case_plots.rockfill, run_dir="../long/rockfill_q19_cs0.2",
+         notes="2 W: half the discharge per metre."),
 ]
 
 
+def run_path(c, args):
+    return os.path.normpath(os.path.join(args.runs, c["run_dir"]))
+
+
+def readable_copy(out, scratch):
+    """A run still in progress: a copy of its outputs (not its checkpoints), read without HDF5's
+    file locks, so that neither the run nor the report disturbs the other."""
+    copy = os.path.join(scratch, os.path.basename(out))
+    os.makedirs(copy, exist_ok=True)
+    for name in os.listdir(out):
+        if os.path.isfile(os.path.join(out, name)):
+            shutil.copy2(os.path.join(out, name), copy)
+    return copy
+
+
 def run_case(c, args):
-    out = os.path.join(args.runs, c["name"])
+    out = run_path(c, args)
     command = [os.path.join(args.bin, "coupler"), "run", os.path.join(ROOT, c["scene"]),
                "--out", out]
     for o in c["overrides"]:
@@ -90,8 +152,8 @@ def run_case(c, args):
     subprocess.run(command, check=False, stdout=subprocess.DEVNULL)
 
 
-def validate(c, args):
-    out = os.path.join(args.runs, c["name"])
+def validate(c, args, out=None):
+    out = out or run_path(c, args)
     series = os.path.join(out, "validate_series.csv")
     command = [os.path.join(args.bin, "porosph_validate"), c["check"], out] + c["extra"]
     if c["check"] in ("rockfill_overtopping", "hydraulic_heave"):
@@ -113,8 +175,9 @@ def run_facts(out):
 
 def command_line(c):
     sets = "".join(f" --set '{o}'" for o in c["overrides"])
-    return (f"build/bin/coupler run {c['scene']}{sets} --out runs/validation/{c['name']}\n"
-            f"build/bin/porosph_validate {c['check']} runs/validation/{c['name']}"
+    where = os.path.normpath(os.path.join("runs/validation", c["run_dir"]))
+    return (f"build/bin/coupler run {c['scene']}{sets} --out {where}\n"
+            f"build/bin/porosph_validate {c['check']} {where}"
             + "".join(" " + e for e in c["extra"]))
 
 
@@ -125,7 +188,7 @@ def heave_grid_section(args):
         out = os.path.join(args.runs, name)
         if not os.path.exists(os.path.join(out, "run.json")):
             continue
-        _, summaries = validate(dict(check="hydraulic_heave", extra=[], name=name), args)
+        _, summaries = validate(dict(check="hydraulic_heave", extra=[], run_dir=name), args)
         value = summaries[0][1] if summaries else "?"
         rows.append((s, g, value))
     if not rows:
@@ -164,36 +227,39 @@ def main():
         return 0
     if args.run:
         for c in cases:
-            if not os.path.exists(os.path.join(args.runs, c["name"], "run.json")):
+            if not os.path.exists(os.path.join(run_path(c, args), "run.json")):
                 run_case(c, args)
+    os.environ["HDF5_USE_FILE_LOCKING"] = "FALSE"  # also for the plots (h5py)
+    scratch = tempfile.mkdtemp(prefix="porosph-report-")
 
     table = ["| case | quantity | PoroSPH | reference | error | target | verdict | particles "
              "(initial, per phase, walls included) | steps | wall time |",
              "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     sections = []
     for c in CASES:
-        out = os.path.join(args.runs, c["name"])
+        out = run_path(c, args)
         if not os.path.exists(os.path.join(out, "run.json")):
             table.append(f"| {c['name']} | not run | | | | | | | | |")
             continue
         facts = run_facts(out)
-        if facts["status"] == "running":
-            table.append(f"| {c['name']} | still running (t = {facts['time']:.2f} s) "
-                         "| | | | | | | | |")
-            continue
-        text, summaries = validate(c, args)
+        partial = facts["status"] == "running"
+        if partial:
+            out = readable_copy(out, scratch)
+        text, summaries = validate(c, args, out)
+        state = f"partial: running, t = {facts['time']:.1f} s so far; " if partial else ""
         particles = ", ".join(f"{p} {n:,}" for p, n in facts["particles"].items())
         for cells in summaries:
             quantity, value, reference, error, target, verdict = (x.replace("|", "\\|")
                                                                   for x in cells)
-            table.append(f"| {c['name']} | {quantity} | {value} | {reference} | {error} | "
+            table.append(f"| {c['name']} | {state}{quantity} | {value} | {reference} | {error} | "
                          f"{target} | {verdict} | {particles} | {facts['steps']:,} | "
                          f"{facts['wall']:.0f} s |")
         if c["name"].startswith("heave_s"):
             continue  # the grid's runs appear in the Fig. 8 table only
         figures = c["plot"](out, args.figures, c["name"]) if c["plot"] else []
         body = [f"## {c['name']}: {c['title']}", "", c["notes"], "", "```", command_line(c),
-                "```", "", f"Run: {facts['status']} to t = {facts['time']:.3f} s, "
+                "```", "", f"Run: {facts['status']} to t = {facts['time']:.3f} s"
+                f"{' (in progress: a copy of its outputs so far)' if partial else ''}, "
                 f"{facts['steps']:,} steps, {facts['wall']:.0f} s wall time; {particles}.", "",
                 "```", text.strip(), "```", ""]
         body += [f"![{c['name']}]({os.path.relpath(f, args.docs)})" for f in figures]
@@ -213,6 +279,7 @@ def main():
     with open(args.out, "w") as f:
         f.write("\n".join(header + table) + "\n\n" + heave_grid_section(args) + "\n"
                 + "\n".join(sections))
+    shutil.rmtree(scratch, ignore_errors=True)
     print("wrote", args.out)
     return 0
 
