@@ -11,10 +11,12 @@
 #include <map>
 #include <stdexcept>
 #include <string_view>
+#include <utility>
 #include <zmq.hpp>
 
 #include "proto/porosph.pb.h"
 #include "proto/wire_convert.h"
+#include "proto/wire_frames.h"
 #include "proto/wire_message.h"
 
 namespace porosph::coupler {
@@ -59,8 +61,10 @@ struct SolverHub::Impl {
   std::map<std::string, std::string> active_peer;
   std::map<std::string, std::string> pending_peer;
   // Reused for every message: repeated fields, vectors and strings keep their capacity.
-  wire::Envelope incoming;        // any body except states
-  wire::StepState state_message;  // states: parsed here, keeping the arrays' capacity
+  wire::Envelope incoming;                // any body except states
+  wire::StepState state_message;          // states: parsed here, keeping the arrays' capacity
+  wire::Diagnostics diagnostics_scratch;  // a state's diagnostics on the direct path
+  wire::CommandFrame command_frame;
   wire::Envelope outgoing;
   zmq::message_t peer_frame;
   zmq::message_t payload_frame;
@@ -133,16 +137,12 @@ struct SolverHub::Impl {
     }
   }
 
-  bool send_payload(zmq::message_t frame) {
-    bytes_sent += frame.size();
-    return socket.send(frame, zmq::send_flags::none).has_value();
-  }
-
-  void send_outgoing(const std::string& peer, const std::string& phase) {
-    const auto start = Clock::now();
+  /// Sends [peer][payload] to the phase's solver.
+  void send_frames(const std::string& peer, const std::string& phase, zmq::message_t payload) {
+    bytes_sent += payload.size();
     try {
       if (!socket.send(zmq::buffer(peer), zmq::send_flags::sndmore) ||
-          !send_payload(wire::to_frame(outgoing))) {
+          !socket.send(payload, zmq::send_flags::none)) {
         throw std::runtime_error("cannot send to the " + phase + " solver: it stopped reading");
       }
     } catch (const zmq::error_t& e) {
@@ -151,6 +151,11 @@ struct SolverHub::Impl {
       }
       throw std::runtime_error("cannot send to the " + phase + " solver: " + e.what());
     }
+  }
+
+  void send_outgoing(const std::string& peer, const std::string& phase) {
+    const auto start = Clock::now();
+    send_frames(peer, phase, wire::to_frame(outgoing));
     codec_seconds += seconds_since(start);
   }
 };
@@ -187,9 +192,20 @@ bool SolverHub::receive(Incoming& out, double timeout_seconds) {
     const auto start = Clock::now();
     const std::string_view peer = view(d.peer_frame);
     wire::Envelope::BodyCase body = wire::Envelope::BODY_NOT_SET;
-    const bool parsed = frames == Impl::Frames::WellFormed &&
-                        wire::parse_envelope(d.payload_frame.data(), d.payload_frame.size(),
-                                             d.state_message, d.incoming, body);
+    // A state as our client writes it goes straight into out.state (wire_frames.h); anything
+    // else through the generated code.
+    const std::uint8_t* state_body = nullptr;
+    std::size_t state_size = 0;
+    const bool state_read =
+        frames == Impl::Frames::WellFormed &&
+        wire::envelope_body(d.payload_frame.data(), d.payload_frame.size(),
+                            wire::Envelope::kStateFieldNumber, &state_body, &state_size) &&
+        wire::read_state_body(state_body, state_size, out.state, d.diagnostics_scratch);
+    if (state_read) body = wire::Envelope::kState;
+    const bool parsed =
+        state_read || (frames == Impl::Frames::WellFormed &&
+                       wire::parse_envelope(d.payload_frame.data(), d.payload_frame.size(),
+                                            d.state_message, d.incoming, body));
     if (parsed && body == wire::Envelope::kHello) {
       const wire::Hello& hello = d.incoming.hello();
       d.register_hello(peer, hello.phase());
@@ -218,7 +234,7 @@ bool SolverHub::receive(Incoming& out, double timeout_seconds) {
       switch (body) {
         case wire::Envelope::kState:
           out.kind = Incoming::Kind::State;
-          wire::from_wire(d.state_message, out.state);
+          if (!state_read) wire::from_wire(d.state_message, out.state);
           break;
         case wire::Envelope::kError: {
           const wire::Error& error = d.incoming.error();
@@ -258,9 +274,10 @@ void SolverHub::send_command(const std::string& phase, const coupling::StepComma
     throw std::runtime_error("cannot send a command to the " + phase + " solver: it has no Setup");
   }
   const auto start = Clock::now();
-  wire::to_wire(command, *impl_->outgoing.mutable_command());
+  zmq::message_t frame(impl_->command_frame.prepare(command));
+  impl_->command_frame.write(static_cast<std::uint8_t*>(frame.data()));
+  impl_->send_frames(active->second, phase, std::move(frame));
   impl_->codec_seconds += seconds_since(start);
-  impl_->send_outgoing(active->second, phase);
 }
 
 void SolverHub::send_error(const std::string& phase, const std::string& message) {

@@ -8,11 +8,13 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <utility>
 #include <zmq.hpp>
 
 #include "proto/porosph.pb.h"
 #include "proto/state_delta.h"
 #include "proto/wire_convert.h"
+#include "proto/wire_frames.h"
 #include "proto/wire_message.h"
 
 namespace porosph::coupling {
@@ -47,18 +49,22 @@ struct CouplingClient::Impl {
   wire::Envelope incoming;            // any body except commands
   wire::StepCommand command_message;  // commands: parsed here, keeping the arrays' capacity
   wire::Envelope::BodyCase received = wire::Envelope::BODY_NOT_SET;
+  bool command_read = false;  ///< the last command went straight into `command` (wire_frames.h)
+  wire::StateFrame state_frame;
   zmq::message_t reply;
   StateDeltaEncoder state_delta;  ///< what each state may leave out (proto/state_delta.h)
   double communication_seconds = 0;
   std::uint64_t last_sent_step = 0;  ///< step of the last state sent (for messages)
 
-  /// Serialises `outgoing` and queues it (the DEALER queues while the coupler is not yet
-  /// reachable).
-  void send_outgoing(zmq::send_flags flags) {
-    if (!socket.send(wire::to_frame(outgoing), flags)) {
+  /// Queues one frame (the DEALER queues while the coupler is not yet reachable).
+  void send_frame(zmq::message_t frame, zmq::send_flags flags) {
+    if (!socket.send(frame, flags)) {
       throw CouplingError("cannot send to the coupler at " + endpoint + ": send queue is full");
     }
   }
+
+  /// Serialises `outgoing` and queues it.
+  void send_outgoing(zmq::send_flags flags) { send_frame(wire::to_frame(outgoing), flags); }
 
   /// Waits up to `seconds` for one message and parses it (into `command_message` or `incoming`,
   /// `received` says which). False on timeout.
@@ -79,6 +85,17 @@ struct CouplingClient::Impl {
         zmq::message_t extra;
         (void)socket.recv(extra, zmq::recv_flags::none);
         if (!extra.more()) break;
+      }
+      // A command as our coupler writes it goes straight into `command`; anything else through
+      // the generated code.
+      const std::uint8_t* body = nullptr;
+      std::size_t body_size = 0;
+      command_read = wire::envelope_body(reply.data(), reply.size(),
+                                         wire::Envelope::kCommandFieldNumber, &body, &body_size) &&
+                     wire::read_command_body(body, body_size, command);
+      if (command_read) {
+        received = wire::Envelope::kCommand;
+        return true;
       }
       if (!wire::parse_envelope(reply.data(), reply.size(), command_message, incoming, received)) {
         throw CouplingError("malformed message from the coupler at " + endpoint);
@@ -155,8 +172,9 @@ const StepCommand& CouplingClient::exchange(const StepState& state) {
 void CouplingClient::send_state(const StepState& state) {
   Impl& d = *impl_;
   const auto start = Clock::now();
-  wire::to_wire(state, d.state_delta.next(state), *d.outgoing.mutable_state());
-  d.send_outgoing(zmq::send_flags::dontwait);
+  zmq::message_t frame(d.state_frame.prepare(state, d.state_delta.next(state)));
+  d.state_frame.write(static_cast<std::uint8_t*>(frame.data()));
+  d.send_frame(std::move(frame), zmq::send_flags::dontwait);
   d.last_sent_step = state.step;
   d.communication_seconds += std::chrono::duration<double>(Clock::now() - start).count();
 }
@@ -172,7 +190,7 @@ const StepCommand& CouplingClient::receive_command() {
                         std::to_string(d.last_sent_step) + ")");
   }
   if (d.received != wire::Envelope::kCommand) d.throw_unexpected("StepCommand");
-  wire::from_wire(d.command_message, d.command);
+  if (!d.command_read) wire::from_wire(d.command_message, d.command);
   return d.command;
 }
 

@@ -20,6 +20,8 @@ void assign(Vec& out, const google::protobuf::RepeatedField<T>& in) {
   out.assign(in.begin(), in.end());
 }
 
+}  // namespace
+
 void to_wire(const coupling::Diagnostics& in, Diagnostics& out) {
   out.set_particle_count(in.particle_count);
   out.set_free_count(in.free_count);
@@ -72,6 +74,8 @@ void from_wire(const Diagnostics& in, coupling::Diagnostics& out) {
   }
 }
 
+namespace {
+
 const google::protobuf::MessageLite& body_message(const Envelope& envelope) {
   switch (envelope.body_case()) {
     case Envelope::kHello:
@@ -92,10 +96,6 @@ const google::protobuf::MessageLite& body_message(const Envelope& envelope) {
       return envelope;
   }
 }
-
-}  // namespace
-
-namespace {
 
 /// Clear() without freeing sub-messages: a parse merges into the same objects again.
 void clear_keeping_storage(StepState& message) {
