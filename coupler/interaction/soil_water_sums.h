@@ -185,22 +185,25 @@ class SoilWaterSums final : public InteractionEngine {
         const double volume_a = water.overlap_mass[a] / rho_a;
         Vec sum = Vec::Zero();  // sum_i V_i f_ia W_ia
         double rate_sum = 0.0;  // sum_i V_i c_ia W_ia
+        // Distinct arrays: the soil rows written here alias neither the pair data nor the
+        // kernel values, which lets the compiler keep each pair's values in registers.
+        double* __restrict soil_rows = acc.data();
+        const SoilPairData* __restrict pair_data = soil_.data();
+        const double* __restrict kernel_w = w.data();
         for (std::size_t c = 0; c < count; ++c) {
           // No branch per pair: where no seepage acts a = b = 0, so f and its rate vanish, and
           // the rate column is summed also when no rates are asked (soil_pass ignores it then).
-          const SoilPairData& soil_i = soil_[soil_index[c]];
+          const SoilPairData& soil_i = pair_data[soil_index[c]];
           const Vec v_r = v_a - soil_i.velocity;
           const Vec f = seepage_force<D>(soil_i.a, soil_i.b, v_r);
           const double rate = seepage_rate_coefficient<D>(soil_i.a, soil_i.b, v_r);
-          const double weight = volume_a * w[c];
-          double add[kStride];  // one vector add into the soil particle's row
-          for (int k = 0; k < D; ++k) add[k] = weight * f[k];
-          add[D] = weight;
-          add[D + 1] = weight * rate;
-          double* soil_sums = acc.data() + static_cast<std::size_t>(soil_index[c]) * kStride;
-          for (int k = 0; k < kStride; ++k) soil_sums[k] += add[k];
-          sum += (soil_i.volume * w[c]) * f;
-          rate_sum += soil_i.volume * w[c] * rate;
+          const double weight = volume_a * kernel_w[c];
+          double* soil_sums = soil_rows + static_cast<std::size_t>(soil_index[c]) * kStride;
+          for (int k = 0; k < D; ++k) soil_sums[k] += weight * f[k];
+          soil_sums[D] += weight;
+          soil_sums[D + 1] += weight * rate;
+          sum += (soil_i.volume * kernel_w[c]) * f;
+          rate_sum += soil_i.volume * kernel_w[c] * rate;
         }
         if (!forces) continue;
         const Vec acceleration = -sum / rho_a;
