@@ -101,6 +101,11 @@ CASES = [
          overrides=["run.dp=0.005", "run.end_time=5.2", "soil.alpha=1.0", "soil.beta=1.0",
                     "run.checkpoint_wall_minutes=5"], plot=case_plots.hydraulic_heave,
          run_dir="../long/heave_dp5_alpha1.0", notes="CASES.md's alpha = beta = 0.1 times 10."),
+    case("heave_alpha2.0", "Hydraulic heave, dp 5 mm, soil artificial viscosity alpha = beta = 2.0",
+         "cases/hydraulic_heave/scene.toml", "hydraulic_heave",
+         overrides=["run.dp=0.005", "run.end_time=6.2", "soil.alpha=2.0", "soil.beta=2.0",
+                    "run.checkpoint_wall_minutes=5"], plot=case_plots.hydraulic_heave,
+         run_dir="../long/heave_dp5_alpha2.0", notes="CASES.md's alpha = beta = 0.1 times 20."),
     case("rockfill_q19_long", "Rockfill core overtopping, Q = 19.36 l/s, towards steady state",
          "cases/rockfill_overtopping/scene.toml", "rockfill_overtopping",
          overrides=["run.dp=0.02", "run.end_time=120.2", "run.checkpoint_wall_minutes=10"],
@@ -208,7 +213,8 @@ def heave_grid_section(args):
     return "\n".join(text) + "\n"
 
 
-HEAVE_VISCOSITY = [(0.1, "hydraulic_heave"), (0.5, "heave_alpha0.5"), (1.0, "heave_alpha1.0")]
+HEAVE_VISCOSITY = [(0.1, "hydraulic_heave"), (0.5, "heave_alpha0.5"), (1.0, "heave_alpha1.0"),
+                   (2.0, "heave_alpha2.0")]
 
 
 def heave_viscosity_section(args):
