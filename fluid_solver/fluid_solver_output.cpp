@@ -11,6 +11,12 @@ template <int D>
 std::optional<std::string> FluidSolver<D>::find_non_finite(std::int64_t* particle_id) const {
   const FluidParticles<D>& P = particles_;
   const std::int64_t n = static_cast<std::int64_t>(P.size());
+  const std::size_t values = P.size() * D;
+  if (values == 0 || (sph::all_finite(P.position.data()->data(), values) &&
+                      sph::all_finite(P.velocity.data()->data(), values) &&
+                      sph::all_finite(P.density.data(), P.size()))) {
+    return std::nullopt;
+  }
   std::int64_t first = n;
 #pragma omp parallel for schedule(static) reduction(min : first)
   for (std::int64_t a = 0; a < n; ++a) {

@@ -78,6 +78,12 @@ template <int D>
 std::optional<std::string> find_non_finite_soil(const SoilParticles<D>& P, std::uint64_t step,
                                                 double time, std::int64_t* particle_id) {
   const std::int64_t n = static_cast<std::int64_t>(P.size());
+  if (P.size() == 0 || (sph::all_finite(P.position.data()->data(), P.size() * D) &&
+                        sph::all_finite(P.velocity.data()->data(), P.size() * D) &&
+                        sph::all_finite(P.density.data(), P.size()) &&
+                        sph::all_finite(P.stress.data()->data(), P.size() * 9))) {
+    return std::nullopt;
+  }
   std::int64_t first = n;
 #pragma omp parallel for schedule(static) reduction(min : first)
   for (std::int64_t i = 0; i < n; ++i) {

@@ -2,12 +2,23 @@
 // which particle, where, when. Shared by the water and soil solvers.
 #pragma once
 
+#include <cstddef>
 #include <sstream>
 #include <string>
 
 #include "sph/vector.h"
 
 namespace porosph::sph {
+
+/// True when all `count` values are finite. One branch-free pass that vectorises (0 x is 0 for a
+/// finite x, NaN for NaN or Inf; the reduction order does not matter for that): the solvers'
+/// per-step checks run it first and search for the bad particle only when it fails.
+inline bool all_finite(const double* values, std::size_t count) {
+  double probe = 0.0;
+#pragma omp simd reduction(+ : probe)
+  for (std::size_t k = 0; k < count; ++k) probe += 0.0 * values[k];
+  return probe == 0.0;
+}
 
 /// "non-finite <field> of <kind> particle <id> (x = ...; v = ...; rho = ...) at step N, t = T s".
 template <int D>
