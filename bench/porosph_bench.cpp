@@ -5,6 +5,9 @@
 // solver), granular_collapse (soil solver) and fluidized_bed (coupled: also the coupling overhead
 // and the CPU budget).
 //   porosph_bench [--case dam_break] [--particles 30000] [--steps 400] [--threads N] [--keep DIR]
+//                 [--repeat N]
+// --repeat N runs the case N times and ends with the min / median / max of the headline figures
+// (the machine's speed drifts between runs: compare distributions, never one run).
 #include <sys/resource.h>
 #include <sys/wait.h>
 
@@ -19,6 +22,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
+#include <vector>
 
 #ifndef POROSPH_SOURCE_DIR
 #define POROSPH_SOURCE_DIR "."
@@ -77,6 +81,42 @@ void print_coupled(const nlohmann::json& run, const std::string& case_name, doub
   std::printf("%-44s %12.1f\n", "peak memory of the largest process [MiB]", peak_mib);
 }
 
+/// The headline figures of one run: particle-steps/s and (coupled) the coupling overhead share.
+struct Headline {
+  double rate = 0.0;
+  double overhead = 0.0;
+};
+
+Headline headline(const nlohmann::json& run, bool coupled, const std::string& phase) {
+  const double steps = run.at("steps").get<double>();
+  Headline h;
+  if (coupled) {
+    double particles = 0.0, critical_physics = 0.0;
+    for (const char* p : {"water", "soil"}) {
+      const auto& record = run.at("phases").at(p);
+      particles += record.at("particles").at("total").get<double>();
+      critical_physics =
+          std::max(critical_physics, record.at("wall_seconds").at("physics").get<double>());
+    }
+    const double wall = run.at("wall_seconds").at("total").get<double>();
+    h.rate = particles * steps / wall;
+    h.overhead = 100.0 * (1.0 - critical_physics / wall);
+  } else {
+    const auto& record = run.at("phases").at(phase);
+    h.rate = record.at("particles").at("free").get<double>() * steps /
+             record.at("wall_seconds").at("total").get<double>();
+  }
+  return h;
+}
+
+void print_distribution(const char* name, std::vector<double> values, const char* unit) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  const double median = n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+  std::printf("%-44s %.4g / %.4g / %.4g%s (min / median / max of %zu runs)\n", name, values.front(),
+              median, values.back(), unit, n);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -86,12 +126,15 @@ int main(int argc, char** argv) {
   int steps = 400;
   int threads = 0;
   std::string keep;
+  int repeat = 1;
   app.add_option("--case", case_name, "dam_break (water) or granular_collapse (soil)")
       ->check(CLI::IsMember({"dam_break", "granular_collapse", "fluidized_bed"}));
   app.add_option("--particles", particles, "approximate number of free particles");
   app.add_option("--steps", steps, "number of coupled steps");
   app.add_option("--threads", threads, "OpenMP threads (default: all cores)");
   app.add_option("--keep", keep, "run directory to keep (default: a temporary one)");
+  app.add_option("--repeat", repeat, "runs of the case (the last one's table is printed in full)")
+      ->check(CLI::Range(1, 1000));
   CLI11_PARSE(app, argc, argv);
 
   const bool soil = case_name == "granular_collapse";
@@ -132,22 +175,42 @@ int main(int argc, char** argv) {
       "/coupler run " + POROSPH_SOURCE_DIR + "/cases/" + case_name + "/scene.toml --out " + out +
       settings;
   std::printf("# %s\n", command.c_str());
-  const auto start = std::chrono::steady_clock::now();
-  const int status = std::system(command.c_str());
-  const double wall =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (status != 0) {
-    std::fprintf(stderr, "porosph_bench: the run failed (status %d)\n", status);
-    return 1;
+  std::vector<double> rates, overheads;
+  nlohmann::json run;
+  double wall = 0.0;
+  rusage before_last{};  // the children's CPU time before the last run
+  for (int k = 1; k <= repeat; ++k) {
+    getrusage(RUSAGE_CHILDREN, &before_last);
+    const auto start = std::chrono::steady_clock::now();
+    const int status = std::system(command.c_str());
+    wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (status != 0) {
+      std::fprintf(stderr, "porosph_bench: the run failed (status %d)\n", status);
+      return 1;
+    }
+    std::ifstream file(out + "/run.json");
+    run = nlohmann::json::parse(file);
+    const Headline h = headline(run, coupled, phase);
+    rates.push_back(h.rate);
+    overheads.push_back(h.overhead);
+    if (repeat > 1) {
+      std::printf("run %d of %d: %.4g particle-steps/s", k, repeat, h.rate);
+      if (coupled) std::printf(", coupling overhead %.1f %%", h.overhead);
+      std::printf("\n");
+      std::fflush(stdout);
+    }
   }
-  std::ifstream file(out + "/run.json");
-  const auto run = nlohmann::json::parse(file);
+  if (repeat > 1) {
+    print_distribution("particle-steps/s", rates, "");
+    if (coupled) print_distribution("coupling overhead share of step time", overheads, " %");
+  }
   rusage usage{};
   getrusage(RUSAGE_CHILDREN, &usage);
   if (coupled) {
     const auto seconds = [](const timeval& t) { return t.tv_sec + 1e-6 * t.tv_usec; };
-    print_coupled(run, case_name, wall, usage.ru_maxrss / 1024.0,
-                  seconds(usage.ru_utime) + seconds(usage.ru_stime));
+    const double cpu = seconds(usage.ru_utime) + seconds(usage.ru_stime) -
+                       seconds(before_last.ru_utime) - seconds(before_last.ru_stime);
+    print_coupled(run, case_name, wall, usage.ru_maxrss / 1024.0, cpu);
     if (keep.empty()) std::filesystem::remove_all(out);
     return 0;
   }
