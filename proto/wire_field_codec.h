@@ -108,9 +108,19 @@ inline bool read_varint(CodedInputStream& in, WireType type, std::uint64_t& v) {
   return type == kVarint && in.ReadVarint64(&v);
 }
 /// Appends (a repeated field may come in several pieces).
+/// True when `length` more bytes are there (the readers push the body's size as a limit first), so
+/// that a corrupt length is refused before anything is allocated for it.
+inline bool bytes_left(const CodedInputStream& in, std::uint32_t length) {
+  const int left = in.BytesUntilLimit();
+  return left >= 0 && static_cast<std::int64_t>(length) <= left;
+}
+
 inline bool read_packed_doubles(CodedInputStream& in, WireType type, std::vector<double>& out) {
   std::uint32_t length = 0;
-  if (type != kDelimited || !in.ReadVarint32(&length) || length % 8 != 0) return false;
+  if (type != kDelimited || !in.ReadVarint32(&length) || length % 8 != 0 ||
+      !bytes_left(in, length)) {
+    return false;
+  }
   const std::size_t old = out.size();
   out.resize(old + length / 8);
   return length == 0 || in.ReadRaw(out.data() + old, static_cast<int>(length));
@@ -118,7 +128,7 @@ inline bool read_packed_doubles(CodedInputStream& in, WireType type, std::vector
 template <class T>
 inline bool read_packed_varints(CodedInputStream& in, WireType type, std::vector<T>& out) {
   std::uint32_t length = 0;
-  if (type != kDelimited || !in.ReadVarint32(&length)) return false;
+  if (type != kDelimited || !in.ReadVarint32(&length) || !bytes_left(in, length)) return false;
   const CodedInputStream::Limit limit = in.PushLimit(static_cast<int>(length));
   while (in.BytesUntilLimit() > 0) {
     std::uint64_t v = 0;

@@ -132,7 +132,9 @@ bool envelope_body(const void* data, std::size_t size, int field, const std::uin
 
 bool read_state_body(const std::uint8_t* data, std::size_t size, coupling::StepState& out,
                      Diagnostics& scratch) {
+  if (size > static_cast<std::size_t>(std::numeric_limits<int>::max())) return false;
   CodedInputStream in(data, static_cast<int>(size));
+  in.PushLimit(static_cast<int>(size));  // bytes_left() measures against it
   out.step = 0;
   out.time = out.dt_limit = out.dt_cfl = out.dt_viscous = out.dt_force = 0.0;
   out.clear_overlap();
@@ -230,7 +232,9 @@ bool read_state_body(const std::uint8_t* data, std::size_t size, coupling::StepS
 }
 
 bool read_command_body(const std::uint8_t* data, std::size_t size, coupling::StepCommand& out) {
+  if (size > static_cast<std::size_t>(std::numeric_limits<int>::max())) return false;
   CodedInputStream in(data, static_cast<int>(size));
+  in.PushLimit(static_cast<int>(size));  // bytes_left() measures against it
   out.step = 0;
   out.time = out.dt = 0.0;
   out.write_output = out.stop = out.write_checkpoint = false;

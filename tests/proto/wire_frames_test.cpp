@@ -194,6 +194,19 @@ TEST(WireFrames, OtherEncodingsAreLeftToTheGeneratedCode) {
   ASSERT_TRUE(read_state_body(reinterpret_cast<const std::uint8_t*>(unknown.data()), unknown.size(),
                               state, scratch));
   EXPECT_EQ(state.step, 5u);
+  // A corrupt array length (2 GB claimed in a 10-byte body) is refused before anything is
+  // allocated for it.
+  std::string corrupt;
+  {
+    google::protobuf::io::StringOutputStream stream(&corrupt);
+    google::protobuf::io::CodedOutputStream out(&stream);
+    WireFormatLite::WriteTag(8, WireFormatLite::WIRETYPE_LENGTH_DELIMITED, &out);
+    out.WriteVarint32(0x7ffffff8u);
+    out.WriteLittleEndian64(0);
+  }
+  EXPECT_FALSE(read_state_body(reinterpret_cast<const std::uint8_t*>(corrupt.data()),
+                               corrupt.size(), state, scratch));
+  EXPECT_LT(state.overlap_position.capacity(), 1000u);
   // A truncated frame is refused, not read past its end.
   const std::string bytes = frame_state_bytes(sample_state(), {});
   const std::uint8_t* b = nullptr;
