@@ -113,6 +113,12 @@ CASES = [
          plot=case_plots.hydraulic_heave, run_dir="../long/heave_dp5_geostatic_jaky",
          notes="The sand starts at 97.5 % of its Drucker-Prager limit instead of the damping "
                "stage's ~80 % (docs/validation-studies.md)."),
+    case("heave_nofilter", "Hydraulic heave, dp 5 mm, without the Shepard stress filter",
+         "cases/hydraulic_heave/scene.toml", "hydraulic_heave",
+         overrides=["run.dp=0.005", "run.end_time=3.2", "soil.stress_filter_every=0",
+                    "run.checkpoint_wall_minutes=5"],
+         plot=case_plots.hydraulic_heave, run_dir="../long/heave_dp5_nofilter",
+         notes="The scene filters the soil stress every 10 steps (CASES.md); here never."),
     case("rockfill_q19_k0elastic", "Rockfill, Q = 19.36 l/s, initial K0 = nu / (1 - nu)",
          "cases/rockfill_overtopping/scene.toml", "rockfill_overtopping",
          overrides=["run.dp=0.02", "run.end_time=120.2", "soil.k0=elastic",
