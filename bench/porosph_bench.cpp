@@ -34,6 +34,35 @@ std::string executable_dir() {
   return std::filesystem::read_symlink("/proc/self/exe").parent_path().string();
 }
 
+/// The headline figures of one run: particle-steps/s and (coupled) the coupling overhead share.
+struct Headline {
+  double rate = 0.0;
+  double overhead = 0.0;
+  double critical_physics = 0.0;  ///< coupled: the slower solver's physics wall time [s]
+};
+
+Headline headline(const nlohmann::json& run, bool coupled, const std::string& phase) {
+  const double steps = run.at("steps").get<double>();
+  Headline h;
+  if (coupled) {
+    double particles = 0.0;
+    for (const char* p : {"water", "soil"}) {
+      const auto& record = run.at("phases").at(p);
+      particles += record.at("particles").at("total").get<double>();
+      h.critical_physics =
+          std::max(h.critical_physics, record.at("wall_seconds").at("physics").get<double>());
+    }
+    const double wall = run.at("wall_seconds").at("total").get<double>();
+    h.rate = particles * steps / wall;
+    h.overhead = 100.0 * (1.0 - h.critical_physics / wall);
+  } else {
+    const auto& record = run.at("phases").at(phase);
+    h.rate = record.at("particles").at("free").get<double>() * steps /
+             record.at("wall_seconds").at("total").get<double>();
+  }
+  return h;
+}
+
 /// The coupled figures: both phases' particles, the whole run's particle-steps per second, and the
 /// coupling overhead: the share of the wall time the slower solver spent outside its own physics
 /// (serialising, ZeroMQ, the coupler's interaction, waiting) - the solvers run in parallel, so the
@@ -46,15 +75,13 @@ std::string executable_dir() {
 void print_coupled(const nlohmann::json& run, const std::string& case_name, double wall,
                    double peak_mib, double cpu_seconds) {
   const double steps = run.at("steps").get<double>();
-  double particles = 0.0, critical_physics = 0.0;
+  const Headline h = headline(run, true, "");
   std::printf("%-44s %12s\n", "figure", "value");
   std::printf("%-44s %12s\n", "case", case_name.c_str());
   for (const char* phase : {"water", "soil"}) {
     const auto& record = run.at("phases").at(phase);
     const double total = record.at("particles").at("total").get<double>();
     const double physics = record.at("wall_seconds").at("physics").get<double>();
-    particles += total;
-    critical_physics = std::max(critical_physics, physics);
     std::printf("%-44s %12.0f\n", (std::string(phase) + " particles (incl. fixed)").c_str(), total);
     std::printf("%-44s %12.1f\n", (std::string(phase) + " neighbours per particle").c_str(),
                 record.at("final").at("neighbours_per_particle").get<double>());
@@ -69,44 +96,14 @@ void print_coupled(const nlohmann::json& run, const std::string& case_name, doub
   std::printf("%-44s %12.0f\n", "message bytes per step (states + commands)",
               run.at("transport").at("bytes_per_step").get<double>());
   std::printf("%-44s %12.2f\n", "run wall time (run.json) [s]", run_wall);
-  std::printf("%-44s %12.3e\n", "particle-steps/s (both phases, whole run)",
-              particles * steps / run_wall);
-  std::printf("%-44s %11.1f%%\n", "coupling overhead share of step time",
-              100.0 * (1.0 - critical_physics / run_wall));
+  std::printf("%-44s %12.3e\n", "particle-steps/s (both phases, whole run)", h.rate);
+  std::printf("%-44s %11.1f%%\n", "coupling overhead share of step time", h.overhead);
   const double cores = std::max(1u, std::thread::hardware_concurrency());
   std::printf("%-44s %12.2f\n", "CPU time of all processes [s]", cpu_seconds);
   std::printf("%-44s %11.1f%%\n", "overhead bound from the CPU budget",
-              100.0 * std::max(0.0, 1.0 - cores * critical_physics / cpu_seconds));
+              100.0 * std::max(0.0, 1.0 - cores * h.critical_physics / cpu_seconds));
   std::printf("%-44s %12.2f\n", "whole run wall time incl. start [s]", wall);
   std::printf("%-44s %12.1f\n", "peak memory of the largest process [MiB]", peak_mib);
-}
-
-/// The headline figures of one run: particle-steps/s and (coupled) the coupling overhead share.
-struct Headline {
-  double rate = 0.0;
-  double overhead = 0.0;
-};
-
-Headline headline(const nlohmann::json& run, bool coupled, const std::string& phase) {
-  const double steps = run.at("steps").get<double>();
-  Headline h;
-  if (coupled) {
-    double particles = 0.0, critical_physics = 0.0;
-    for (const char* p : {"water", "soil"}) {
-      const auto& record = run.at("phases").at(p);
-      particles += record.at("particles").at("total").get<double>();
-      critical_physics =
-          std::max(critical_physics, record.at("wall_seconds").at("physics").get<double>());
-    }
-    const double wall = run.at("wall_seconds").at("total").get<double>();
-    h.rate = particles * steps / wall;
-    h.overhead = 100.0 * (1.0 - critical_physics / wall);
-  } else {
-    const auto& record = run.at("phases").at(phase);
-    h.rate = record.at("particles").at("free").get<double>() * steps /
-             record.at("wall_seconds").at("total").get<double>();
-  }
-  return h;
 }
 
 void print_distribution(const char* name, std::vector<double> values, const char* unit) {
@@ -231,7 +228,7 @@ int main(int argc, char** argv) {
   std::printf("%-44s %12.0f\n", "coupled steps", run_steps);
   std::printf("%-44s %12.2f\n", (phase + " solver wall time [s]").c_str(), solver_wall);
   std::printf("%-44s %12.3e\n", "particle-steps/s (free particles)",
-              free_particles * run_steps / solver_wall);
+              headline(run, false, phase).rate);
   std::printf("%-44s %12.3e\n", "particle-steps/s (all particles)",
               total * run_steps / solver_wall);
   std::printf("%-44s %11.1f%%\n", "coupler round trip share of solver time",

@@ -137,6 +137,26 @@ struct SolverHub::Impl {
     }
   }
 
+  /// Parses payload_frame: a state into `state`, any other body into `incoming`; `body` says
+  /// which. A state as our client writes it goes straight into `state` (wire_frames.h), anything
+  /// else through the generated code. False when malformed.
+  bool parse_payload(coupling::StepState& state, wire::Envelope::BodyCase& body) {
+    const std::uint8_t* state_body = nullptr;
+    std::size_t state_size = 0;
+    if (wire::envelope_body(payload_frame.data(), payload_frame.size(),
+                            wire::Envelope::kStateFieldNumber, &state_body, &state_size) &&
+        wire::read_state_body(state_body, state_size, state, diagnostics_scratch)) {
+      body = wire::Envelope::kState;
+      return true;
+    }
+    if (!wire::parse_envelope(payload_frame.data(), payload_frame.size(), state_message, incoming,
+                              body)) {
+      return false;
+    }
+    if (body == wire::Envelope::kState) wire::from_wire(state_message, state);
+    return true;
+  }
+
   /// Sends [peer][payload] to the phase's solver.
   void send_frames(const std::string& peer, const std::string& phase, zmq::message_t payload) {
     bytes_sent += payload.size();
@@ -192,20 +212,7 @@ bool SolverHub::receive(Incoming& out, double timeout_seconds) {
     const auto start = Clock::now();
     const std::string_view peer = view(d.peer_frame);
     wire::Envelope::BodyCase body = wire::Envelope::BODY_NOT_SET;
-    // A state as our client writes it goes straight into out.state (wire_frames.h); anything
-    // else through the generated code.
-    const std::uint8_t* state_body = nullptr;
-    std::size_t state_size = 0;
-    const bool state_read =
-        frames == Impl::Frames::WellFormed &&
-        wire::envelope_body(d.payload_frame.data(), d.payload_frame.size(),
-                            wire::Envelope::kStateFieldNumber, &state_body, &state_size) &&
-        wire::read_state_body(state_body, state_size, out.state, d.diagnostics_scratch);
-    if (state_read) body = wire::Envelope::kState;
-    const bool parsed =
-        state_read || (frames == Impl::Frames::WellFormed &&
-                       wire::parse_envelope(d.payload_frame.data(), d.payload_frame.size(),
-                                            d.state_message, d.incoming, body));
+    const bool parsed = frames == Impl::Frames::WellFormed && d.parse_payload(out.state, body);
     if (parsed && body == wire::Envelope::kHello) {
       const wire::Hello& hello = d.incoming.hello();
       d.register_hello(peer, hello.phase());
@@ -234,7 +241,6 @@ bool SolverHub::receive(Incoming& out, double timeout_seconds) {
       switch (body) {
         case wire::Envelope::kState:
           out.kind = Incoming::Kind::State;
-          if (!state_read) wire::from_wire(d.state_message, out.state);
           break;
         case wire::Envelope::kError: {
           const wire::Error& error = d.incoming.error();

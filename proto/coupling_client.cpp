@@ -49,7 +49,6 @@ struct CouplingClient::Impl {
   wire::Envelope incoming;            // any body except commands
   wire::StepCommand command_message;  // commands: parsed here, keeping the arrays' capacity
   wire::Envelope::BodyCase received = wire::Envelope::BODY_NOT_SET;
-  bool command_read = false;  ///< the last command went straight into `command` (wire_frames.h)
   wire::StateFrame state_frame;
   zmq::message_t reply;
   StateDeltaEncoder state_delta;  ///< what each state may leave out (proto/state_delta.h)
@@ -66,8 +65,8 @@ struct CouplingClient::Impl {
   /// Serialises `outgoing` and queues it.
   void send_outgoing(zmq::send_flags flags) { send_frame(wire::to_frame(outgoing), flags); }
 
-  /// Waits up to `seconds` for one message and parses it (into `command_message` or `incoming`,
-  /// `received` says which). False on timeout.
+  /// Waits up to `seconds` for one message and parses it (a command into `command`, anything
+  /// else into `incoming`; `received` says which). False on timeout.
   bool receive_incoming(double seconds) {
     const auto deadline = Clock::now() + to_milliseconds(seconds);
     for (;;) {
@@ -90,16 +89,16 @@ struct CouplingClient::Impl {
       // the generated code.
       const std::uint8_t* body = nullptr;
       std::size_t body_size = 0;
-      command_read = wire::envelope_body(reply.data(), reply.size(),
-                                         wire::Envelope::kCommandFieldNumber, &body, &body_size) &&
-                     wire::read_command_body(body, body_size, command);
-      if (command_read) {
+      if (wire::envelope_body(reply.data(), reply.size(), wire::Envelope::kCommandFieldNumber,
+                              &body, &body_size) &&
+          wire::read_command_body(body, body_size, command)) {
         received = wire::Envelope::kCommand;
         return true;
       }
       if (!wire::parse_envelope(reply.data(), reply.size(), command_message, incoming, received)) {
         throw CouplingError("malformed message from the coupler at " + endpoint);
       }
+      if (received == wire::Envelope::kCommand) wire::from_wire(command_message, command);
       return true;
     }
   }
@@ -190,7 +189,6 @@ const StepCommand& CouplingClient::receive_command() {
                         std::to_string(d.last_sent_step) + ")");
   }
   if (d.received != wire::Envelope::kCommand) d.throw_unexpected("StepCommand");
-  if (!d.command_read) wire::from_wire(d.command_message, d.command);
   return d.command;
 }
 

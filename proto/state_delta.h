@@ -12,12 +12,37 @@
 // left out").
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "proto/coupling_client.h"
 
 namespace porosph::coupling {
+
+/// What of each per-step array a state with a delta carries: the values of its first n - K
+/// particles (K the unchanged tail), every value without a tail. The one rule every writer of
+/// states (wire_convert.h, wire_frames.h) applies.
+struct SentParticles {
+  SentParticles(const StepState& state, const StateDelta& delta)
+      : whole(delta.unchanged_tail == 0),
+        moved(state.overlap_id.size() -
+              std::min<std::size_t>(state.overlap_id.size(), delta.unchanged_tail)),
+        dimension(state.overlap_id.empty()
+                      ? 0
+                      : state.overlap_position.size() / state.overlap_id.size()) {}
+
+  /// How many of `values` (`per_particle` values per particle: D or 1) go.
+  std::size_t count(const std::vector<double>& values, std::size_t per_particle) const {
+    return whole || values.empty() ? values.size() : moved * per_particle;
+  }
+
+  bool whole;             ///< no tail: the arrays go as they are
+  std::size_t moved;      ///< particles whose per-step values go
+  std::size_t dimension;  ///< D of the vector arrays (0 without particles)
+};
 
 /// Remembers the arrays of the last state sent and finds what the next one may leave out.
 class StateDeltaEncoder {

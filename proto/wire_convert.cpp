@@ -7,6 +7,8 @@
 #include <iterator>
 #include <limits>
 
+#include "proto/state_delta.h"
+
 namespace porosph::wire {
 namespace {
 
@@ -165,22 +167,16 @@ void to_wire(const coupling::StepState& in, const coupling::StateDelta& delta, S
   assign(out.mutable_overlap_id(), delta.same_set ? none_id : in.overlap_id);
   assign(out.mutable_overlap_mass(), delta.same_set ? none : in.overlap_mass);
   assign(out.mutable_overlap_material(), delta.same_set ? none_material : in.overlap_material);
-  // Without a tail the arrays go whole; with one (the encoder checked the sizes) n - K particles.
-  const std::size_t n = in.overlap_id.size();
-  const std::size_t moved = n - std::min<std::size_t>(n, delta.unchanged_tail);
-  const std::size_t d = n > 0 ? in.overlap_position.size() / n : 0;
-  const auto prefix = [&](google::protobuf::RepeatedField<double>* field,
-                          const std::vector<double>& values, std::size_t count) {
-    if (delta.unchanged_tail == 0 || values.empty()) {
-      assign(field, values);
-    } else {
-      field->Assign(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(count));
-    }
+  const coupling::SentParticles sent(in, delta);
+  const auto per_step = [&](google::protobuf::RepeatedField<double>* field,
+                            const std::vector<double>& values, std::size_t per_particle) {
+    const auto count = static_cast<std::ptrdiff_t>(sent.count(values, per_particle));
+    field->Assign(values.begin(), values.begin() + count);
   };
-  prefix(out.mutable_overlap_position(), in.overlap_position, moved * d);
-  prefix(out.mutable_overlap_velocity(), in.overlap_velocity, moved * d);
-  prefix(out.mutable_overlap_density(), in.overlap_density, moved);
-  prefix(out.mutable_overlap_porosity(), in.overlap_porosity, moved);
+  per_step(out.mutable_overlap_position(), in.overlap_position, sent.dimension);
+  per_step(out.mutable_overlap_velocity(), in.overlap_velocity, sent.dimension);
+  per_step(out.mutable_overlap_density(), in.overlap_density, 1);
+  per_step(out.mutable_overlap_porosity(), in.overlap_porosity, 1);
   assign(out.mutable_region_min(), in.region_min);
   assign(out.mutable_region_max(), in.region_max);
   to_wire(in.diagnostics, *out.mutable_diagnostics());

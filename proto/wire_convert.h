@@ -31,10 +31,10 @@ void from_wire(const StepState& in, coupling::StepState& out);
 void to_wire(const coupling::StepCommand& in, StepCommand& out);
 void from_wire(const StepCommand& in, coupling::StepCommand& out);
 
-/// `protocol_version` is not part of SetupData; the coupler fills it in the message separately.
 void to_wire(const coupling::Diagnostics& in, Diagnostics& out);
 void from_wire(const Diagnostics& in, coupling::Diagnostics& out);
 
+/// `protocol_version` is not part of SetupData; the coupler fills it in the message separately.
 void to_wire(const coupling::SetupData& in, Setup& out);
 void from_wire(const Setup& in, coupling::SetupData& out);
 

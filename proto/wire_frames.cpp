@@ -15,15 +15,14 @@ std::size_t StateFrame::prepare(const coupling::StepState& state,
                                 const coupling::StateDelta& delta) {
   state_ = &state;
   delta_ = delta;
+  sent_ = coupling::SentParticles(state, delta);
   const std::size_t n = state.overlap_id.size();
-  dimension_ = n > 0 ? state.overlap_position.size() / n : 0;
-  moved_ = n - std::min<std::size_t>(n, delta.unchanged_tail);
   id_bytes_ = delta.same_set ? 0 : varint_data_bytes(state.overlap_id);
   material_bytes_ = delta.same_set ? 0 : varint_data_bytes(state.overlap_material);
   to_wire(state.diagnostics, diagnostics_);
   diagnostics_bytes_ = diagnostics_.ByteSizeLong();
   const auto per_step = [&](const std::vector<double>& v, std::size_t per_particle) {
-    return delta.unchanged_tail == 0 || v.empty() ? v.size() : moved_ * per_particle;
+    return sent_.count(v, per_particle);
   };
   const std::size_t set_count = delta.same_set ? 0 : n;
   body_bytes_ =
@@ -31,8 +30,8 @@ std::size_t StateFrame::prepare(const coupling::StepState& state,
       double_field_bytes(3, state.dt_limit) + double_field_bytes(4, state.dt_cfl) +
       double_field_bytes(5, state.dt_viscous) + double_field_bytes(6, state.dt_force) +
       packed_varints_bytes(7, set_count, id_bytes_) +
-      packed_doubles_bytes(8, per_step(state.overlap_position, dimension_)) +
-      packed_doubles_bytes(9, per_step(state.overlap_velocity, dimension_)) +
+      packed_doubles_bytes(8, per_step(state.overlap_position, sent_.dimension)) +
+      packed_doubles_bytes(9, per_step(state.overlap_velocity, sent_.dimension)) +
       packed_doubles_bytes(10, per_step(state.overlap_density, 1)) +
       packed_doubles_bytes(11, delta.same_set ? 0 : state.overlap_mass.size()) +
       packed_doubles_bytes(12, per_step(state.overlap_porosity, 1)) +
@@ -47,11 +46,9 @@ std::size_t StateFrame::prepare(const coupling::StepState& state,
 
 void StateFrame::write(std::uint8_t* p) const {
   const coupling::StepState& s = *state_;
-  const bool tail = delta_.unchanged_tail != 0;
   const auto per_step = [&](int field, const std::vector<double>& v, std::size_t per_particle,
                             std::uint8_t* at) {
-    const std::size_t count = !tail || v.empty() ? v.size() : moved_ * per_particle;
-    return write_packed_doubles(field, v.data(), count, at);
+    return write_packed_doubles(field, v.data(), sent_.count(v, per_particle), at);
   };
   p = write_length(Envelope::kStateFieldNumber, body_bytes_, p);
   p = write_varint_field(1, s.step, p);
@@ -61,8 +58,8 @@ void StateFrame::write(std::uint8_t* p) const {
   p = write_double_field(5, s.dt_viscous, p);
   p = write_double_field(6, s.dt_force, p);
   if (!delta_.same_set) p = write_packed_varints(7, s.overlap_id, id_bytes_, p);
-  p = per_step(8, s.overlap_position, dimension_, p);
-  p = per_step(9, s.overlap_velocity, dimension_, p);
+  p = per_step(8, s.overlap_position, sent_.dimension, p);
+  p = per_step(9, s.overlap_velocity, sent_.dimension, p);
   p = per_step(10, s.overlap_density, 1, p);
   if (!delta_.same_set) {
     p = write_packed_doubles(11, s.overlap_mass.data(), s.overlap_mass.size(), p);

@@ -13,6 +13,7 @@
 
 #include "proto/coupling_client.h"
 #include "proto/porosph.pb.h"
+#include "proto/state_delta.h"
 
 namespace porosph::wire {
 
@@ -27,8 +28,8 @@ class StateFrame {
  private:
   const coupling::StepState* state_ = nullptr;
   coupling::StateDelta delta_;
-  std::size_t moved_ = 0;  ///< particles whose per-step values go (n - unchanged tail)
-  std::size_t dimension_ = 0, id_bytes_ = 0, material_bytes_ = 0, body_bytes_ = 0;
+  coupling::SentParticles sent_{coupling::StepState{}, coupling::StateDelta{}};
+  std::size_t id_bytes_ = 0, material_bytes_ = 0, body_bytes_ = 0;
   Diagnostics diagnostics_;  ///< the nested message (small): the generated code writes it
   std::size_t diagnostics_bytes_ = 0;
 };
