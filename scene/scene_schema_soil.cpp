@@ -70,6 +70,14 @@ void add_soil_settings(SceneSchema& s) {
                        .doc("Shepard filter of the soil stress every N steps (stress "
                             "regularisation, Nguyen et al. 2017); removes the row-to-row stress "
                             "oscillation the pair form of eq. 5 cannot see; 0: off."));
+  s.keys.push_back(
+      Key("soil.stress_filter", T::String)
+          .fallback("\"shepard\"")
+          .one_of({"shepard", "mls"})
+          .doc("Weights of that filter (within one material, then back onto the yield cone): "
+               "shepard, the kernel average (exact for a constant stress; near a free face it "
+               "hands a particle the stress of the deeper rows); mls, a first-order moving "
+               "least squares fit (exact for a linearly varying stress, also at free faces)."));
 }
 
 void add_soil_materials(SceneSchema& s) {

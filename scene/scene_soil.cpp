@@ -147,6 +147,7 @@ SoilPhase build_soil_phase(const toml::table& soil) {
   p.damping_duration = *soil["damping_duration"].value<double>();
   p.damping_coefficient = *soil["damping_coefficient"].value<double>();
   p.stress_filter_every = static_cast<int>(*soil["stress_filter_every"].value<int64_t>());
+  p.stress_filter = text_of(soil, "stress_filter");
   for (const auto& element : *soil.get_as<toml::array>("materials"))
     p.materials.push_back(material_of(*element.as_table()));
   p.blocks = shapes_of(soil.get_as<toml::array>("blocks"));

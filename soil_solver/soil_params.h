@@ -35,6 +35,9 @@ struct SoilMaterialConstants {
   double submerged_ratio = 1.0;
 };
 
+/// Weights of the periodic stress filter (stress_filter.h).
+enum class StressFilterKind { Shepard, Mls };
+
 template <int D>
 struct SoilParams {
   double dp = 0.01, h = 0.012, volume = 1e-4;
@@ -47,7 +50,8 @@ struct SoilParams {
   double damping_duration = 0.0;      ///< [s]; 0: no damping stage
   double damping_coefficient = 0.02;  ///< D = coefficient sqrt(E / (rho h^2))
   double cfl = 0.2, c_a = 0.25;
-  int stress_filter_every = 0;        ///< Shepard stress filter period in steps (0: off)
+  int stress_filter_every = 0;  ///< stress filter period in steps (0: off)
+  StressFilterKind stress_filter = StressFilterKind::Shepard;
   double submerged_saturation = 0.8;  ///< water fraction from which a particle is submerged
   double wet_saturation = 0.1;        ///< water fraction from which a particle is wet
   std::vector<SoilMaterialConstants> materials;
@@ -91,6 +95,8 @@ struct SoilParams {
     p.cfl = s.run.cfl;
     p.c_a = s.run.c_a;
     p.stress_filter_every = soil.stress_filter_every;
+    p.stress_filter =
+        soil.stress_filter == "mls" ? StressFilterKind::Mls : StressFilterKind::Shepard;
     p.submerged_saturation = s.coupling.submerged_saturation;
     p.wet_saturation = s.coupling.wet_saturation;
     const double rho_water = s.water ? s.water->rho0 : 0.0;

@@ -125,7 +125,9 @@ std::vector<std::string> SoilSolver<D>::active_terms() const {
                                     "jaumann_stress_rate", "drucker_prager_return"};
   if (params_.viscosity_on()) terms.push_back("artificial_viscosity");
   if (params_.any_artificial_stress()) terms.push_back("artificial_stress");
-  if (params_.stress_filter_every > 0) terms.push_back("shepard_stress_filter");
+  if (params_.stress_filter_every > 0)
+    terms.push_back(params_.stress_filter == StressFilterKind::Mls ? "mls_stress_filter"
+                                                                   : "shepard_stress_filter");
   if (params_.any_wet_cohesion_loss()) terms.push_back("wet_cohesion_loss");
   if (particles_.n_free < particles_.size()) terms.push_back("walls");
   if (params_.geostatic_initial) terms.push_back("geostatic_initial_stress");
@@ -175,7 +177,8 @@ template <class Kernel>
 void SoilSolver<D>::compute_rates_with(const Kernel& kernel) {
   const int every = params_.stress_filter_every;
   if (every > 0 && step_ > 0 && step_ % static_cast<std::uint64_t>(every) == 0)
-    shepard_stress_filter(neighbours_, kernel, particles_, filter_scratch_);
+    filter_soil_stress(params_.stress_filter, neighbours_, kernel, params_, particles_,
+                       filter_scratch_);
   update_soil_wall_state(neighbours_, kernel, params_, particles_);
   if (params_.any_artificial_stress()) update_artificial_stress(params_, particles_);
   const SoilRateSummary r = compute_soil_rates(neighbours_, kernel, params_, particles_);
