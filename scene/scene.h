@@ -150,7 +150,7 @@ struct SoilPhase {
   double damping_duration = 0.0;          ///< [s] initial damping stage; 0: none
   double damping_coefficient = 0.02;      ///< D = coefficient sqrt(E / (rho h^2))
   int stress_filter_every = 0;            ///< stress filter every N steps; 0: off
-  std::string stress_filter = "shepard";  ///< its weights: "shepard" | "mls"
+  std::string stress_filter = "mls";  ///< its weights: "shepard" | "mls"
   std::vector<SoilMaterial> materials;
   std::vector<Shape> blocks;  ///< regions filled with soil at t = 0; `material` names one
 

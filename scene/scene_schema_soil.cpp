@@ -72,7 +72,7 @@ void add_soil_settings(SceneSchema& s) {
                             "oscillation the pair form of eq. 5 cannot see; 0: off."));
   s.keys.push_back(
       Key("soil.stress_filter", T::String)
-          .fallback("\"shepard\"")
+          .fallback("\"mls\"")
           .one_of({"shepard", "mls"})
           .doc("Weights of that filter (within one material, then back onto the yield cone): "
                "shepard, the kernel average (exact for a constant stress; near a free face it "

@@ -51,7 +51,7 @@ struct SoilParams {
   double damping_coefficient = 0.02;  ///< D = coefficient sqrt(E / (rho h^2))
   double cfl = 0.2, c_a = 0.25;
   int stress_filter_every = 0;  ///< stress filter period in steps (0: off)
-  StressFilterKind stress_filter = StressFilterKind::Shepard;
+  StressFilterKind stress_filter = StressFilterKind::Mls;
   double submerged_saturation = 0.8;  ///< water fraction from which a particle is submerged
   double wet_saturation = 0.1;        ///< water fraction from which a particle is wet
   std::vector<SoilMaterialConstants> materials;
@@ -96,7 +96,7 @@ struct SoilParams {
     p.c_a = s.run.c_a;
     p.stress_filter_every = soil.stress_filter_every;
     p.stress_filter =
-        soil.stress_filter == "mls" ? StressFilterKind::Mls : StressFilterKind::Shepard;
+        soil.stress_filter == "shepard" ? StressFilterKind::Shepard : StressFilterKind::Mls;
     p.submerged_saturation = s.coupling.submerged_saturation;
     p.wet_saturation = s.coupling.wet_saturation;
     const double rho_water = s.water ? s.water->rho0 : 0.0;

@@ -215,17 +215,3 @@ def heave_grid(rows, figures):
     ax.legend()
     return save(fig, figures, "hydraulic_heave", "grid")
 
-
-def heave_viscosity(rows, figures):
-    """rows: (alpha = beta of the soil, 'T s' or 'none by ...')."""
-    pts = [(a, float(v.split()[0])) for (a, v) in rows if v[0].isdigit()]
-    if not pts:
-        return None
-    fig, ax = plt.subplots(figsize=(5, 3.5))
-    ax.plot(*zip(*sorted(pts)), "o-", label="PoroSPH, dp 5 mm, phi 29 / 40")
-    ax.axhline(4.4, color="k", ls="--", label="experiment 4.4 s")
-    ax.set_xscale("log")
-    ax.set_xlabel("soil artificial viscosity alpha = beta")
-    ax.set_ylabel("time of complete failure [s]")
-    ax.legend()
-    return save(fig, figures, "hydraulic_heave", "viscosity")

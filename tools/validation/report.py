@@ -82,73 +82,13 @@ CASES = [
                     f"soil.materials[1].friction_angle={g}"])
     for (s, g) in HEAVE_GRID if (s, g) != (29, 40)
 ] + [
-    # Long runs (runs/long/, checkpointed and resumed across sessions); a run still in progress
-    # is validated from a copy of what it has written so far and marked partial.
-    case("hydraulic_heave_dp2.5", "Hydraulic heave at the paper's resolution (dp 2.5 mm)",
+    case("heave_mls", "Hydraulic heave, dp 5 mm, with the (mls) stress filter every 10 steps",
          "cases/hydraulic_heave/scene.toml", "hydraulic_heave",
-         overrides=["run.checkpoint_wall_minutes=5"], plot=case_plots.hydraulic_heave,
-         run_dir="../long/heave_dp2.5_v3",
-         notes="The scene's own resolution (CASES.md: dx 2.5 mm, 27,276 particles)."),
-    case("heave_alpha0.5", "Hydraulic heave, dp 5 mm, soil artificial viscosity alpha = beta = 0.5",
-         "cases/hydraulic_heave/scene.toml", "hydraulic_heave",
-         overrides=["run.dp=0.005", "soil.alpha=0.5", "soil.beta=0.5",
-                    "run.checkpoint_wall_minutes=5"], plot=case_plots.hydraulic_heave,
-         run_dir="../long/heave_dp5_alpha0.5_full",
-         notes="CASES.md's alpha = beta = 0.1 times 5: how much the failure time follows a "
-               "numerical parameter (docs/validation-studies.md)."),
-    case("heave_alpha1.0", "Hydraulic heave, dp 5 mm, soil artificial viscosity alpha = beta = 1.0",
-         "cases/hydraulic_heave/scene.toml", "hydraulic_heave",
-         overrides=["run.dp=0.005", "run.end_time=5.2", "soil.alpha=1.0", "soil.beta=1.0",
-                    "run.checkpoint_wall_minutes=5"], plot=case_plots.hydraulic_heave,
-         run_dir="../long/heave_dp5_alpha1.0", notes="CASES.md's alpha = beta = 0.1 times 10."),
-    case("heave_alpha2.0", "Hydraulic heave, dp 5 mm, soil artificial viscosity alpha = beta = 2.0",
-         "cases/hydraulic_heave/scene.toml", "hydraulic_heave",
-         overrides=["run.dp=0.005", "run.end_time=6.2", "soil.alpha=2.0", "soil.beta=2.0",
-                    "run.checkpoint_wall_minutes=5"], plot=case_plots.hydraulic_heave,
-         run_dir="../long/heave_dp5_alpha2.0", notes="CASES.md's alpha = beta = 0.1 times 20."),
-    case("heave_geostatic_jaky", "Hydraulic heave, dp 5 mm, geostatic Jaky K0 initial stress",
-         "cases/hydraulic_heave/scene.toml", "hydraulic_heave",
-         overrides=["run.dp=0.005", "run.end_time=5.2", "soil.initial_stress=geostatic",
-                    "soil.k0=jaky", "run.checkpoint_wall_minutes=5"],
-         plot=case_plots.hydraulic_heave, run_dir="../long/heave_dp5_geostatic_jaky",
-         notes="The sand starts at 97.5 % of its Drucker-Prager limit instead of the damping "
-               "stage's ~80 % (docs/validation-studies.md)."),
-    case("heave_nofilter", "Hydraulic heave, dp 5 mm, without the Shepard stress filter",
-         "cases/hydraulic_heave/scene.toml", "hydraulic_heave",
-         overrides=["run.dp=0.005", "run.end_time=3.2", "soil.stress_filter_every=0",
-                    "run.checkpoint_wall_minutes=5"],
-         plot=case_plots.hydraulic_heave, run_dir="../long/heave_dp5_nofilter",
-         notes="The scene filters the soil stress every 10 steps (CASES.md); here never."),
-    case("rockfill_q19_k0elastic", "Rockfill, Q = 19.36 l/s, initial K0 = nu / (1 - nu)",
-         "cases/rockfill_overtopping/scene.toml", "rockfill_overtopping",
-         overrides=["run.dp=0.02", "run.end_time=120.2", "soil.k0=elastic",
-                    "run.checkpoint_wall_minutes=5"],
-         plot=case_plots.rockfill, run_dir="../long/rockfill_q19_k0elastic",
-         notes="K0 0.43 instead of Jaky's 0.34: the wet gravel starts at 86 % of its "
-               "Drucker-Prager limit instead of 101.6 % (docs/validation-studies.md)."),
-    case("rockfill_q19_long", "Rockfill core overtopping, Q = 19.36 l/s, towards steady state",
-         "cases/rockfill_overtopping/scene.toml", "rockfill_overtopping",
-         overrides=["run.dp=0.02", "run.end_time=120.2", "run.checkpoint_wall_minutes=10"],
-         plot=case_plots.rockfill, run_dir="../long/rockfill_q19_120s",
-         notes="dp 0.02 m, W = 2.5 m (assumed), to 120 s of inflow."),
-    case("rockfill_q30_long", "Rockfill core overtopping, Q = 30.45 l/s, towards steady state",
-         "cases/rockfill_overtopping/scene.toml", "rockfill_overtopping",
-         overrides=["run.dp=0.02", "run.end_time=120.2", "water.inflow[0].flow_rate=0.03045",
-                    "run.checkpoint_wall_minutes=5"],
-         plot=case_plots.rockfill, run_dir="../long/rockfill_q30_120s",
-         notes="dp 0.02 m, W = 2.5 m (assumed), to 120 s of inflow."),
-    case("rockfill_q19_w1.25", "Rockfill, Q = 19.36 l/s with the flume width halved (W = 1.25 m)",
-         "cases/rockfill_overtopping/scene.toml", "rockfill_overtopping",
-         overrides=["run.dp=0.02", "run.end_time=60.2", "water.inflow[0].cross_section=0.05",
-                    "run.checkpoint_wall_minutes=5"],
-         plot=case_plots.rockfill, run_dir="../long/rockfill_q19_cs0.05",
-         notes="W / 2: twice the discharge per metre."),
-    case("rockfill_q19_w5", "Rockfill, Q = 19.36 l/s with the flume width doubled (W = 5 m)",
-         "cases/rockfill_overtopping/scene.toml", "rockfill_overtopping",
-         overrides=["run.dp=0.02", "run.end_time=60.2", "water.inflow[0].cross_section=0.2",
-                    "run.checkpoint_wall_minutes=5"],
-         plot=case_plots.rockfill, run_dir="../long/rockfill_q19_cs0.2",
-         notes="2 W: half the discharge per metre."),
+         overrides=["run.dp=0.005", "soil.stress_filter_every=10"],
+         plot=case_plots.hydraulic_heave,
+         notes="The scene runs without a stress filter, as the seed paper; this variant filters "
+               "the soil stress every 10 steps with the first-order (mls) weights "
+               "(docs/validation-studies.md, \"The stress filter near a free face\")."),
 ]
 
 
@@ -233,38 +173,6 @@ def heave_grid_section(args):
     return "\n".join(text) + "\n"
 
 
-HEAVE_VISCOSITY = [(0.1, "hydraulic_heave"), (0.5, "heave_alpha0.5"), (1.0, "heave_alpha1.0"),
-                   (2.0, "heave_alpha2.0")]
-
-
-def heave_viscosity_section(args):
-    """Failure time against the soil's Monaghan coefficients (docs/validation-studies.md)."""
-    by_name = {c["name"]: c for c in CASES}
-    rows = []
-    with tempfile.TemporaryDirectory(prefix="porosph-report-") as scratch:
-        for (alpha, name) in HEAVE_VISCOSITY:
-            c = by_name[name]
-            out = run_path(c, args)
-            if not os.path.exists(os.path.join(out, "run.json")):
-                continue
-            if run_facts(out)["status"] == "running":
-                out = readable_copy(out, scratch)
-            _, summaries = validate(c, args, out)
-            rows.append((alpha, summaries[0][1] if summaries else "?"))
-    if not rows:
-        return ""
-    text = ["## Failure time against the soil's artificial viscosity", "",
-            "dp 5 mm, phi 29 / 40, `--set soil.alpha=A --set soil.beta=A` (CASES.md: A = 0.1). "
-            "A numerical parameter moves the failure time as much as the friction angles do: "
-            "docs/validation-studies.md discusses why.", "",
-            "| alpha = beta | time of complete failure (experiment 4.4 s) |", "| --- | --- |"]
-    text += [f"| {a} | {v} |" for (a, v) in rows]
-    figure = case_plots.heave_viscosity(rows, args.figures)
-    if figure:
-        text += ["", f"![failure time vs soil viscosity]({os.path.relpath(figure, args.docs)})"]
-    return "\n".join(text) + "\n"
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--runs", default=os.path.join(ROOT, "runs", "validation"))
@@ -335,7 +243,6 @@ def main():
               ""]
     with open(args.out, "w") as f:
         f.write("\n".join(header + table) + "\n\n" + heave_grid_section(args) + "\n"
-                + heave_viscosity_section(args) + "\n"
                 + "\n".join(sections))
     shutil.rmtree(scratch, ignore_errors=True)
     print("wrote", args.out)
