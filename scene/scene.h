@@ -123,6 +123,7 @@ struct SoilMaterial {
   double cohesion = 0.0;                ///< c [Pa]
   double friction_angle_deg = 0.0;      ///< phi [deg]
   double dilatancy_angle_deg = 0.0;     ///< psi [deg], <= phi
+  std::string yield_fit = "eq10";       ///< "eq10" | "flow_rule" (drucker_prager_constants.h)
   bool artificial_stress = false;       ///< Gray-Monaghan artificial stress on
   bool fixed = false;                   ///< rigid porous bed: never moves
   std::string seepage = "none";         ///< "none" | "darcy_kozeny_carman" | "darcy_conductivity" |

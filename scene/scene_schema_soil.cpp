@@ -144,6 +144,14 @@ void add_soil_materials(SceneSchema& s) {
                        .at_most(89)
                        .doc("Dilatancy angle psi of the plastic potential; at most "
                             "friction_angle."));
+  s.keys.push_back(
+      Key(m + "yield_fit", T::String)
+          .fallback("\"eq10\"")
+          .one_of({"eq10", "flow_rule"})
+          .doc("How the Drucker-Prager cone is matched to Mohr-Coulomb (phi, c) in plane "
+               "strain: eq10, the seed paper's constants, exact at plastic flow only for "
+               "associated flow (psi = phi); flow_rule, exact for the material's own psi (psi = "
+               "0: alpha_phi = sin(phi) / 3, k_c = c cos(phi); a wider cone than eq10)."));
   s.keys.push_back(Key(m + "artificial_stress", T::Bool)
                        .fallback("false")
                        .doc("Gray-Monaghan artificial stress against tensile instability."));

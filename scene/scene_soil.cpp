@@ -94,6 +94,7 @@ SoilMaterial material_of(const toml::table& table) {
   m.cohesion = number("cohesion", m.cohesion);
   m.friction_angle_deg = number("friction_angle", m.friction_angle_deg);
   m.dilatancy_angle_deg = number("dilatancy_angle", m.dilatancy_angle_deg);
+  m.yield_fit = table["yield_fit"].value<std::string>().value_or(m.yield_fit);
   m.artificial_stress = flag("artificial_stress", m.artificial_stress);
   m.fixed = flag("fixed", m.fixed);
   m.seepage = table["seepage"].value<std::string>().value_or(m.seepage);

@@ -18,6 +18,17 @@
 //     of eq. 12a/12b exactly. For small psi it is ~9 times the plane-strain fit, and psi = phi
 //     does not give associated flow. Kept so the paper can be reproduced literally.
 // For psi = 0 (every case in CASES.md) both forms give beta_psi = 0: plastically incompressible.
+//
+// Which plastic flow eq. 10 assumes. Eq. 10 matches Mohr-Coulomb in plane strain at plastic flow
+// with ASSOCIATED flow (psi = phi). With the potential above, plane-strain plastic flow
+// (eps_dot_zz = 0) makes s_zz = -2 beta_psi sqrt(J2), so sqrt(J2) = t / sqrt(1 - 3 beta^2) with t
+// the in-plane maximum shear stress and I1 = 3 p_in - 3 beta sqrt(J2) (p_in the in-plane mean);
+// equating f = 0 with t = c cos(phi) - p_in sin(phi) gives
+//   alpha_phi = sin(phi) / (3 sqrt(1 - 3 beta^2) + 3 beta sin(phi)),
+//   k_c = c cos(phi) (1 - 3 alpha_phi beta) / sqrt(1 - 3 beta^2),
+// which is eq. 10 for beta = alpha_phi (associated) and alpha_phi = sin(phi) / 3, k_c = c cos(phi)
+// for psi = 0. YieldFit::kFlowRule uses it; with psi = 0 eq. 10's cone is narrower (phi 41: 3
+// alpha_phi = 0.614 instead of sin 41 = 0.656, the friction of a Mohr-Coulomb soil of 37.8 deg).
 #pragma once
 
 #include <cmath>
@@ -27,6 +38,12 @@ namespace porosph::soil {
 
 /// Which expression turns the dilatancy angle into the potential coefficient beta_psi.
 enum class DilatancyForm { kPlaneStrainFit, kSeedPaperEq11 };
+
+/// Which plane-strain plastic flow the yield function is matched to Mohr-Coulomb for.
+enum class YieldFit {
+  kSeedPaperEq10,  ///< associated flow: eq. 10 (the seed paper, Bui et al. 2008)
+  kFlowRule,       ///< the material's own flow rule (dilatancy psi)
+};
 
 /// The three constants of the yield function and the plastic potential.
 struct DruckerPragerConstants {
@@ -53,7 +70,8 @@ inline double drucker_prager_k_plane_strain(double friction_angle, double cohesi
 /// throws std::invalid_argument otherwise).
 inline DruckerPragerConstants drucker_prager_plane_strain(
     double friction_angle, double cohesion, double dilatancy_angle,
-    DilatancyForm form = DilatancyForm::kPlaneStrainFit) {
+    DilatancyForm form = DilatancyForm::kPlaneStrainFit,
+    YieldFit fit = YieldFit::kSeedPaperEq10) {
   if (!(friction_angle >= 0.0 && friction_angle < 0.5 * M_PI)) {
     throw std::invalid_argument("Drucker-Prager: friction angle must lie in [0, 90) degrees");
   }
@@ -67,6 +85,17 @@ inline DruckerPragerConstants drucker_prager_plane_strain(
   dp.beta_psi = form == DilatancyForm::kPlaneStrainFit
                     ? drucker_prager_alpha_plane_strain(dilatancy_angle)
                     : 3.0 * std::sin(dilatancy_angle);
+  if (fit == YieldFit::kFlowRule) {
+    const double root = 1.0 - 3.0 * dp.beta_psi * dp.beta_psi;
+    if (!(root > 0.0)) {
+      throw std::invalid_argument(
+          "Drucker-Prager: the flow-rule fit needs beta_psi < 1 / sqrt(3) (a smaller psi)");
+    }
+    const double s = std::sin(friction_angle);
+    dp.alpha_phi = s / (3.0 * std::sqrt(root) + 3.0 * dp.beta_psi * s);
+    dp.k_c = cohesion * std::cos(friction_angle) * (1.0 - 3.0 * dp.alpha_phi * dp.beta_psi) /
+             std::sqrt(root);
+  }
   return dp;
 }
 

@@ -16,6 +16,7 @@ struct MaterialParameters {
   double cohesion = 0.0;             ///< c [Pa]
   double dilatancy_angle_deg = 0.0;  ///< psi [degrees]
   DilatancyForm dilatancy_form = DilatancyForm::kPlaneStrainFit;
+  YieldFit yield_fit = YieldFit::kSeedPaperEq10;
 };
 
 /// What the constitutive functions use: K, G and the Drucker-Prager constants.
@@ -32,7 +33,8 @@ inline Material make_material(const MaterialParameters& p) {
   const ElasticConstants e = elastic_from_young_poisson(p.young, p.poisson);
   const DruckerPragerConstants dp =
       drucker_prager_plane_strain(degrees_to_radians(p.friction_angle_deg), p.cohesion,
-                                  degrees_to_radians(p.dilatancy_angle_deg), p.dilatancy_form);
+                                  degrees_to_radians(p.dilatancy_angle_deg), p.dilatancy_form,
+                                  p.yield_fit);
   Material m;
   m.bulk_modulus = e.bulk_modulus;
   m.shear_modulus = e.shear_modulus;

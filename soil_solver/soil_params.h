@@ -109,6 +109,7 @@ struct SoilParams {
       mp.friction_angle_deg = m.friction_angle_deg;
       mp.cohesion = m.cohesion;
       mp.dilatancy_angle_deg = m.dilatancy_angle_deg;
+      mp.yield_fit = m.yield_fit == "flow_rule" ? YieldFit::kFlowRule : YieldFit::kSeedPaperEq10;
       try {
         c.model = make_material(mp);
         mp.cohesion = 0.0;

@@ -64,6 +64,57 @@ TEST(DruckerPragerConstants, DilatancyForms) {
   EXPECT_NEAR(lit.beta_psi, 0.5209445330007912, 0.52 * kClosedForm);
 }
 
+TEST(DruckerPragerConstants, FlowRuleFitForPsiZeroIsSinPhiOverThree) {
+  // psi = 0: plane-strain plastic flow keeps s_zz = 0, so sqrt(J2) is the in-plane maximum shear
+  // t and I1 = 3 p_in: Mohr-Coulomb t = c cos(phi) - p_in sin(phi) gives alpha_phi = sin(phi) / 3,
+  // k_c = c cos(phi). phi 41, c 1.5 kPa: 0.218686 and 1132.06 Pa (eq. 10: 0.204507, 1059.0 Pa).
+  const double phi = degrees_to_radians(41.0);
+  const auto fit = drucker_prager_plane_strain(phi, 1500.0, 0.0, DilatancyForm::kPlaneStrainFit,
+                                               YieldFit::kFlowRule);
+  EXPECT_NEAR(fit.alpha_phi, std::sin(phi) / 3.0, 1e-15);
+  EXPECT_NEAR(fit.alpha_phi, 0.2186863, 1e-7);
+  EXPECT_NEAR(fit.k_c, 1500.0 * std::cos(phi), 1e-11);
+  EXPECT_EQ(fit.beta_psi, 0.0);
+  const auto eq10 = drucker_prager_plane_strain(phi, 1500.0, 0.0);
+  EXPECT_NEAR(eq10.alpha_phi, 0.2045074, 1e-7);
+  EXPECT_GT(fit.alpha_phi, 1.06 * eq10.alpha_phi);  // 6.9 % wider cone at psi = 0
+}
+
+TEST(DruckerPragerConstants, FlowRuleFitIsEq10ForAssociatedFlow) {
+  // psi = phi with the plane-strain-fit beta_psi: the flow rule is associated, and the fit must
+  // give eq. 10 back (to round-off).
+  for (double deg : {10.0, 29.0, 41.0}) {
+    const double phi = degrees_to_radians(deg);
+    const auto fit = drucker_prager_plane_strain(phi, 2000.0, phi, DilatancyForm::kPlaneStrainFit,
+                                                 YieldFit::kFlowRule);
+    const auto eq10 = drucker_prager_plane_strain(phi, 2000.0, phi);
+    EXPECT_NEAR(fit.alpha_phi, eq10.alpha_phi, 1e-14) << deg;
+    EXPECT_NEAR(fit.k_c, eq10.k_c, 1e-10) << deg;
+  }
+}
+
+TEST(DruckerPragerConstants, FlowRuleFitPutsThePlaneStrainFailureStateOnTheCone) {
+  // phi 35, psi 10, c 5 kPa. A plane-strain state at Mohr-Coulomb failure with the s_zz that the
+  // flow rule leaves (eps_dot_zz = 0: s_zz = -2 beta_psi sqrt(J2)): p_in = -40 kPa, t = c cos(phi)
+  // - p_in sin(phi). Built in principal axes: sigma_1,3 = p_in +- t, sigma_z = p_in + 1.5 s_zz
+  // with s_zz solved from J2 = t^2 + 0.75 s_zz^2. Its yield function must be 0 (round-off).
+  const double phi = degrees_to_radians(35.0), psi = degrees_to_radians(10.0), c = 5000.0;
+  const auto dp = drucker_prager_plane_strain(phi, c, psi, DilatancyForm::kPlaneStrainFit,
+                                              YieldFit::kFlowRule);
+  const double p_in = -40e3, t = c * std::cos(phi) - p_in * std::sin(phi);
+  const double sqrt_j2 = t / std::sqrt(1.0 - 3.0 * dp.beta_psi * dp.beta_psi);
+  const double s_zz = -2.0 * dp.beta_psi * sqrt_j2;
+  const double s1 = p_in + t, s3 = p_in - t, sz = p_in + 1.5 * s_zz;
+  const double i1 = s1 + s3 + sz, mean = i1 / 3.0;
+  const double j2 = 0.5 * ((s1 - mean) * (s1 - mean) + (s3 - mean) * (s3 - mean) +
+                           (sz - mean) * (sz - mean));
+  EXPECT_NEAR(std::sqrt(j2), sqrt_j2, 1e-9 * t);
+  EXPECT_NEAR(std::sqrt(j2) + dp.alpha_phi * i1 - dp.k_c, 0.0, 1e-9 * t);
+  // The same state against eq. 10's cone: outside (f > 0), the cone is narrower.
+  const auto eq10 = drucker_prager_plane_strain(phi, c, psi);
+  EXPECT_GT(std::sqrt(j2) + eq10.alpha_phi * i1 - eq10.k_c, 0.01 * t);
+}
+
 TEST(DruckerPragerConstants, RejectsInadmissibleAngles) {
   EXPECT_THROW(drucker_prager_plane_strain(degrees_to_radians(90.0), 0.0, 0.0),
                std::invalid_argument);
