@@ -146,12 +146,12 @@ struct SoilPhase {
   double artificial_stress_epsilon = 0.5;    ///< Gray-Monaghan epsilon
   double artificial_stress_exponent = 2.55;  ///< Gray-Monaghan n
   double sound_speed = 0.0;  ///< [m/s]; 0: from the stiffest material (stiffest_sound_speed())
-  std::string initial_stress = "none";    ///< "geostatic" | "none"
-  std::string k0 = "jaky";                ///< "jaky" (1 - sin phi) | "elastic" (nu / (1 - nu))
-  double damping_duration = 0.0;          ///< [s] initial damping stage; 0: none
-  double damping_coefficient = 0.02;      ///< D = coefficient sqrt(E / (rho h^2))
-  int stress_filter_every = 0;            ///< stress filter every N steps; 0: off
-  std::string stress_filter = "mls";  ///< its weights: "shepard" | "mls"
+  std::string initial_stress = "none";  ///< "geostatic" | "none"
+  std::string k0 = "jaky";              ///< "jaky" (1 - sin phi) | "elastic" (nu / (1 - nu))
+  double damping_duration = 0.0;        ///< [s] initial damping stage; 0: none
+  double damping_coefficient = 0.02;    ///< D = coefficient sqrt(E / (rho h^2))
+  int stress_filter_every = 0;          ///< stress filter every N steps; 0: off
+  std::string stress_filter = "mls";    ///< its weights: "shepard" | "mls"
   std::vector<SoilMaterial> materials;
   std::vector<Shape> blocks;  ///< regions filled with soil at t = 0; `material` names one
 

@@ -67,9 +67,10 @@ void add_soil_settings(SceneSchema& s) {
   s.keys.push_back(Key("soil.stress_filter_every", T::Int)
                        .fallback("0")
                        .at_least(0)
-                       .doc("Shepard filter of the soil stress every N steps (stress "
-                            "regularisation, Nguyen et al. 2017); removes the row-to-row stress "
-                            "oscillation the pair form of eq. 5 cannot see; 0: off."));
+                       .doc("Filter of the soil stress every N steps (stress regularisation, "
+                            "Nguyen et al. 2017; weights: soil.stress_filter); removes the "
+                            "row-to-row stress oscillation the pair form of eq. 5 cannot see; "
+                            "0: off."));
   s.keys.push_back(
       Key("soil.stress_filter", T::String)
           .fallback("\"mls\"")

@@ -70,8 +70,7 @@ inline double drucker_prager_k_plane_strain(double friction_angle, double cohesi
 /// throws std::invalid_argument otherwise).
 inline DruckerPragerConstants drucker_prager_plane_strain(
     double friction_angle, double cohesion, double dilatancy_angle,
-    DilatancyForm form = DilatancyForm::kPlaneStrainFit,
-    YieldFit fit = YieldFit::kSeedPaperEq10) {
+    DilatancyForm form = DilatancyForm::kPlaneStrainFit, YieldFit fit = YieldFit::kSeedPaperEq10) {
   if (!(friction_angle >= 0.0 && friction_angle < 0.5 * M_PI)) {
     throw std::invalid_argument("Drucker-Prager: friction angle must lie in [0, 90) degrees");
   }

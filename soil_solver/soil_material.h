@@ -31,10 +31,9 @@ struct Material {
 /// Material from E, nu, phi, c, psi (throws std::invalid_argument on inadmissible values).
 inline Material make_material(const MaterialParameters& p) {
   const ElasticConstants e = elastic_from_young_poisson(p.young, p.poisson);
-  const DruckerPragerConstants dp =
-      drucker_prager_plane_strain(degrees_to_radians(p.friction_angle_deg), p.cohesion,
-                                  degrees_to_radians(p.dilatancy_angle_deg), p.dilatancy_form,
-                                  p.yield_fit);
+  const DruckerPragerConstants dp = drucker_prager_plane_strain(
+      degrees_to_radians(p.friction_angle_deg), p.cohesion,
+      degrees_to_radians(p.dilatancy_angle_deg), p.dilatancy_form, p.yield_fit);
   Material m;
   m.bulk_modulus = e.bulk_modulus;
   m.shear_modulus = e.shear_modulus;

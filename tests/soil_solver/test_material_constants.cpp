@@ -99,15 +99,15 @@ TEST(DruckerPragerConstants, FlowRuleFitPutsThePlaneStrainFailureStateOnTheCone)
   // - p_in sin(phi). Built in principal axes: sigma_1,3 = p_in +- t, sigma_z = p_in + 1.5 s_zz
   // with s_zz solved from J2 = t^2 + 0.75 s_zz^2. Its yield function must be 0 (round-off).
   const double phi = degrees_to_radians(35.0), psi = degrees_to_radians(10.0), c = 5000.0;
-  const auto dp = drucker_prager_plane_strain(phi, c, psi, DilatancyForm::kPlaneStrainFit,
-                                              YieldFit::kFlowRule);
+  const auto dp =
+      drucker_prager_plane_strain(phi, c, psi, DilatancyForm::kPlaneStrainFit, YieldFit::kFlowRule);
   const double p_in = -40e3, t = c * std::cos(phi) - p_in * std::sin(phi);
   const double sqrt_j2 = t / std::sqrt(1.0 - 3.0 * dp.beta_psi * dp.beta_psi);
   const double s_zz = -2.0 * dp.beta_psi * sqrt_j2;
   const double s1 = p_in + t, s3 = p_in - t, sz = p_in + 1.5 * s_zz;
   const double i1 = s1 + s3 + sz, mean = i1 / 3.0;
-  const double j2 = 0.5 * ((s1 - mean) * (s1 - mean) + (s3 - mean) * (s3 - mean) +
-                           (sz - mean) * (sz - mean));
+  const double j2 =
+      0.5 * ((s1 - mean) * (s1 - mean) + (s3 - mean) * (s3 - mean) + (sz - mean) * (sz - mean));
   EXPECT_NEAR(std::sqrt(j2), sqrt_j2, 1e-9 * t);
   EXPECT_NEAR(std::sqrt(j2) + dp.alpha_phi * i1 - dp.k_c, 0.0, 1e-9 * t);
   // The same state against eq. 10's cone: outside (f > 0), the cone is narrower.
