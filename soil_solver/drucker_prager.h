@@ -100,7 +100,9 @@ inline bool apply_stress_scaling_back(const Material& m, Eigen::Matrix3d& sigma)
   const double q = sqrt_j2(sigma);
   const double i1 = first_invariant(sigma);
   const double capacity = m.k_c - m.alpha_phi * i1;
-  if (q <= capacity) return false;
+  // q == 0: nothing to scale; beyond the apex by round-off (capacity ~ -1e-17 after a tension
+  // cracking) r would be 0 / 0.
+  if (q <= capacity || q == 0.0) return false;
   const double r = std::max(0.0, capacity) / q;
   const Eigen::Matrix3d hydrostatic = (i1 / 3.0) * Eigen::Matrix3d::Identity();
   sigma = hydrostatic + r * (sigma - hydrostatic);

@@ -15,7 +15,7 @@
 //            with A_i beta_i = e_1, A_i = sum_j W_ij V_j p_j p_j^T, p_j = (1, x_j - x_i). Exact for
 //            a linear field also where the support is cut (a surface row keeps its own stress),
 //            and still removes the row-to-row pattern. Falls back to shepard where A_i is near
-//            singular (fewer than D + 1 neighbours off one line).
+//            singular or the weights would amplify (a thin flow front; constants below).
 // Both stay within one material (averaging sand with gravel mixes two yield cones), and the
 // filtered stress is projected back onto the particle's current Drucker-Prager cone with the
 // return corrections of Bui et al. 2008 (drucker_prager.h): mls weights can be negative, and a
@@ -34,9 +34,14 @@
 namespace porosph::soil {
 
 /// Smallest determinant of the scaled MLS moment matrix (positions in units of h, divided by
-/// A_00^(D+1)) for which the first-order weights are used; full support gives ~0.1 in 2D, a
-/// particle on a flat free surface ~0.02, a row of particles on one line 0.
-constexpr double kMlsMinScaledDeterminant = 1e-4;
+/// A_00^(D+1)) for which the first-order weights are tried. Cubic spline, h = 1.2 dp, 2D lattice:
+/// full support 0.098, a flat free surface 0.046, a corner 0.022, a row on one line 0.
+constexpr double kMlsMinScaledDeterminant = 1e-2;
+/// Largest sum of |w_ij| the first-order weights may have (shepard: 1; a lattice surface row
+/// ~1.2). Beyond it a near-degenerate neighbourhood (the thin front of a granular flow) would
+/// amplify stress differences at every filtering (measured: a granular collapse blew up at
+/// 0.26 s without this bound); shepard is used there instead.
+constexpr double kMlsMaxAbsWeightSum = 2.0;
 
 /// Filtered stress of free particle i (see the file comment).
 template <int D, class Kernel>
@@ -46,34 +51,33 @@ Eigen::Matrix3d filtered_stress(StressFilterKind kind, const sph::NeighbourList<
   using Basis = Eigen::Matrix<double, D + 1, 1>;
   const auto same_material = [&](std::int32_t b) { return P.material[b] == P.material[i]; };
   const double self_weight = kernel.w(0.0) * P.mass[i] / P.density[i];
-  double shepard_sum = self_weight;
   Eigen::Matrix<double, D + 1, D + 1> moments = Eigen::Matrix<double, D + 1, D + 1>::Zero();
   moments(0, 0) = self_weight;
+  Eigen::Matrix3d shepard_sum = self_weight * P.stress[i];
   for (auto it = neighbours.begin(i); it != neighbours.mid(i); ++it) {
     if (!same_material(it->b)) continue;
     const double wv = kernel.w(it->r) * P.mass[it->b] / P.density[it->b];
-    shepard_sum += wv;
-    if (kind == StressFilterKind::Mls) {
-      Basis p;
-      p << 1.0, -it->x_ab / h;  // x_b - x_a in units of h
-      moments += wv * p * p.transpose();
-    }
+    shepard_sum += wv * P.stress[it->b];
+    Basis p;
+    p << 1.0, -it->x_ab / h;  // x_b - x_a in units of h
+    moments += wv * p * p.transpose();
   }
-  Basis beta = Basis::Zero();
-  beta(0) = 1.0 / shepard_sum;  // shepard: w_ij = W_ij V_j beta_0
-  if (kind == StressFilterKind::Mls) {
-    const double scale = std::pow(moments(0, 0), D + 1);
-    if (moments.determinant() > kMlsMinScaledDeterminant * scale)
-      beta = moments.fullPivLu().solve(Basis::Unit(0));
-  }
+  const Eigen::Matrix3d shepard = shepard_sum / moments(0, 0);
+  if (kind == StressFilterKind::Shepard ||
+      !(moments.determinant() > kMlsMinScaledDeterminant * std::pow(moments(0, 0), D + 1)))
+    return shepard;
+  const Basis beta = moments.fullPivLu().solve(Basis::Unit(0));
   Eigen::Matrix3d sum = (self_weight * beta(0)) * P.stress[i];
+  double abs_weights = std::abs(self_weight * beta(0));
   for (auto it = neighbours.begin(i); it != neighbours.mid(i); ++it) {
     if (!same_material(it->b)) continue;
     Basis p;
     p << 1.0, -it->x_ab / h;
-    sum += (kernel.w(it->r) * P.mass[it->b] / P.density[it->b] * beta.dot(p)) * P.stress[it->b];
+    const double w = kernel.w(it->r) * P.mass[it->b] / P.density[it->b] * beta.dot(p);
+    sum += w * P.stress[it->b];
+    abs_weights += std::abs(w);
   }
-  return sum;
+  return abs_weights <= kMlsMaxAbsWeightSum ? sum : shepard;
 }
 
 /// Filters the stress of the free particles in place and returns each onto its current yield

@@ -103,6 +103,20 @@ TEST(DruckerPrager, TensileStateMovesToTheApex) {
   EXPECT_EQ(inside, copy);
 }
 
+TEST(DruckerPrager, HydrostaticStateJustBeyondTheApexStaysFinite) {
+  // Cohesionless (apex at I1 = 0): an isotropic state a round-off beyond the apex has sqrt(J2) = 0
+  // and a capacity of about -1e-17 Pa; the scaling back must leave it alone, not form 0 / 0
+  // (seen in a granular collapse once the filtered stress was returned onto the cone).
+  const Material m = test_material(0.0);
+  Matrix3d sigma = 1e-16 * Matrix3d::Identity();
+  ASSERT_LT(m.k_c - m.alpha_phi * sigma.trace(), 0.0);
+  apply_stress_scaling_back(m, sigma);
+  EXPECT_TRUE(sigma.allFinite());
+  apply_return_corrections(m, sigma);
+  EXPECT_TRUE(sigma.allFinite());
+  EXPECT_LE(sigma.trace(), 1e-30);  // at the apex
+}
+
 TEST(DruckerPrager, PlasticMultiplierKeepsTheStateOnTheSurface) {
   // Consistency of eq. 12a with 12b: on the surface, (df/dsigma) : dsigma/dt = 0 for any
   // loading strain rate, with df/dsigma = s / (2 sqrt J2) + alpha delta. Checked for psi = 10

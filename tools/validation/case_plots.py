@@ -202,16 +202,17 @@ def hydraulic_heave(out, figures, name):
     return paths
 
 
-def heave_grid(rows, figures):
-    """rows: (phi_sand, phi_gravel, 'T s' or 'none by ...')."""
+def heave_grid(fits, figures):
+    """fits: (label, rows) with rows (phi_sand, phi_gravel, 'T s' or 'none by ...')."""
     fig, ax = plt.subplots(figsize=(5, 3.5))
-    for g in sorted({r[1] for r in rows}):
-        pts = [(s, float(v.split()[0])) for (s, gg, v) in rows if gg == g and v[0].isdigit()]
-        if pts:
-            ax.plot(*zip(*sorted(pts)), "o-", label=f"gravel phi {g}")
+    for label, rows in fits:
+        for g in sorted({r[1] for r in rows}):
+            pts = [(s, float(v.split()[0])) for (s, gg, v) in rows if gg == g and v[0].isdigit()]
+            if pts:
+                ax.plot(*zip(*sorted(pts)), "o-", label=f"{label}, gravel phi {g}")
     ax.axhline(4.4, color="k", ls="--", label="experiment 4.4 s")
     ax.set_xlabel("sand friction angle [deg]")
     ax.set_ylabel("time of complete failure [s]")
-    ax.legend()
+    ax.legend(fontsize=7)
     return save(fig, figures, "hydraulic_heave", "grid")
 

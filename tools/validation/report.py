@@ -33,7 +33,9 @@ def case(name, title, scene, check, overrides=(), extra=(), plot=None, notes="",
                 extra=list(extra), plot=plot, notes=notes, run_dir=run_dir or name)
 
 
-HEAVE_GRID = [(26, 40), (29, 40), (29, 45), (32, 40), (35, 40)]
+HEAVE_GRID = [(26, 40), (29, 40), (29, 45), (32, 40), (35, 40)]  # with eq. 10's cone
+HEAVE_GRID_FLOW_RULE = [(26, 40), (29, 40), (32, 40)]              # the scene's yield fit
+EQ10 = ["soil.materials[0].yield_fit=eq10", "soil.materials[1].yield_fit=eq10"]
 
 CASES = [
     case("dam_break", "Dam break against Martin & Moyce (1952), n^2 = 2",
@@ -74,17 +76,29 @@ CASES = [
     case("hydraulic_heave", "Hydraulic heave next to a sheet pile (paper 4.3), phi 29 / 40",
          "cases/hydraulic_heave/scene.toml", "hydraulic_heave", overrides=["run.dp=0.005"],
          plot=case_plots.hydraulic_heave,
-         notes="dp 5 mm (twice the paper's spacing)."),
+         notes="dp 5 mm (twice the paper's spacing); Drucker-Prager matched to Mohr-Coulomb for "
+               "psi = 0 (yield_fit = flow_rule, docs/soil.md)."),
+    case("heave_eq10", "Hydraulic heave with the seed paper's eq. 10 cone, phi 29 / 40",
+         "cases/hydraulic_heave/scene.toml", "hydraulic_heave",
+         overrides=["run.dp=0.005"] + EQ10, plot=case_plots.hydraulic_heave,
+         notes="dp 5 mm; eq. 10's Drucker-Prager constants (associated-flow fit, a narrower "
+               "cone for psi = 0) instead of the scene's flow_rule fit."),
 ] + [
-    case(f"heave_s{s}_g{g}", f"Hydraulic heave, phi sand {s} / gravel {g} (Fig. 8 grid)",
+    case(f"heave_s{s}_g{g}", f"Hydraulic heave, eq. 10, phi sand {s} / gravel {g} (Fig. 8 grid)",
+         "cases/hydraulic_heave/scene.toml", "hydraulic_heave",
+         overrides=["run.dp=0.005", "run.end_time=5.2", f"soil.materials[0].friction_angle={s}",
+                    f"soil.materials[1].friction_angle={g}"] + EQ10)
+    for (s, g) in HEAVE_GRID if (s, g) != (29, 40)
+] + [
+    case(f"heave_fr_s{s}_g{g}", f"Hydraulic heave, phi sand {s} / gravel {g} (Fig. 8 grid)",
          "cases/hydraulic_heave/scene.toml", "hydraulic_heave",
          overrides=["run.dp=0.005", "run.end_time=5.2", f"soil.materials[0].friction_angle={s}",
                     f"soil.materials[1].friction_angle={g}"])
-    for (s, g) in HEAVE_GRID if (s, g) != (29, 40)
+    for (s, g) in HEAVE_GRID_FLOW_RULE if (s, g) != (29, 40)
 ] + [
     case("heave_mls", "Hydraulic heave, dp 5 mm, with the (mls) stress filter every 10 steps",
          "cases/hydraulic_heave/scene.toml", "hydraulic_heave",
-         overrides=["run.dp=0.005", "soil.stress_filter_every=10"],
+         overrides=["run.dp=0.005", "soil.stress_filter_every=10"] + EQ10,
          plot=case_plots.hydraulic_heave,
          notes="The scene runs without a stress filter, as the seed paper; this variant filters "
                "the soil stress every 10 steps with the first-order (mls) weights "
@@ -146,26 +160,36 @@ def command_line(c):
             + "".join(" " + e for e in c["extra"]))
 
 
-def heave_grid_section(args):
+def heave_grid_rows(args, grid, name_of):
     rows = []
-    for (s, g) in HEAVE_GRID:
-        name = "hydraulic_heave" if (s, g) == (29, 40) else f"heave_s{s}_g{g}"
-        out = os.path.join(args.runs, name)
-        if not os.path.exists(os.path.join(out, "run.json")):
-            continue
-        _, summaries = validate(dict(check="hydraulic_heave", extra=[], run_dir=name), args)
-        value = summaries[0][1] if summaries else "?"
-        rows.append((s, g, value))
-    if not rows:
+    for (s, g) in grid:
+        out = os.path.join(args.runs, name_of(s, g))
+        if os.path.exists(os.path.join(out, "run.json")):
+            _, summaries = validate(dict(check="hydraulic_heave", extra=[], run_dir=name_of(s, g)),
+                                    args)
+            rows.append((s, g, summaries[0][1] if summaries else "?"))
+    return rows
+
+
+def heave_grid_section(args):
+    fits = [("flow_rule (the scene)", heave_grid_rows(
+                args, HEAVE_GRID_FLOW_RULE,
+                lambda s, g: "hydraulic_heave" if (s, g) == (29, 40) else f"heave_fr_s{s}_g{g}")),
+            ("eq. 10", heave_grid_rows(
+                args, HEAVE_GRID,
+                lambda s, g: "heave_eq10" if (s, g) == (29, 40) else f"heave_s{s}_g{g}"))]
+    if not any(rows for _, rows in fits):
         return ""
     text = ["## Failure time against the friction angles (the paper's Fig. 8 idea)", "",
             "dp 5 mm, other inputs as cases/hydraulic_heave/scene.toml (`--set "
-            "'soil.materials[0].friction_angle=S' --set 'soil.materials[1].friction_angle=G'`), "
-            "5 s after the damping stage (phi 29 / 40: the scene's 6 s).", "",
-            "| phi sand | phi gravel | time of complete failure (experiment 4.4 s) |",
-            "| --- | --- | --- |"]
-    text += [f"| {s} | {g} | {v} |" for (s, g, v) in rows]
-    figure = case_plots.heave_grid(rows, args.figures)
+            "'soil.materials[0].friction_angle=S' --set 'soil.materials[1].friction_angle=G'`; "
+            "eq. 10 rows also `--set 'soil.materials[0].yield_fit=eq10' --set "
+            "'soil.materials[1].yield_fit=eq10'`), 5 s after the damping stage (phi 29 / 40: the "
+            "scene's 6 s).", "",
+            "| Drucker-Prager fit | phi sand | phi gravel | time of complete failure "
+            "(experiment 4.4 s) |", "| --- | --- | --- | --- |"]
+    text += [f"| {fit} | {s} | {g} | {v} |" for fit, rows in fits for (s, g, v) in rows]
+    figure = case_plots.heave_grid(fits, args.figures)
     if figure:
         text += ["", f"![failure time vs friction angles]({os.path.relpath(figure, args.docs)})"]
     return "\n".join(text) + "\n"
@@ -217,7 +241,7 @@ def main():
             table.append(f"| {c['name']} | {state}{quantity} | {value} | {reference} | {error} | "
                          f"{target} | {verdict} | {particles} | {facts['steps']:,} | "
                          f"{facts['wall']:.0f} s |")
-        if c["name"].startswith("heave_s"):
+        if c["name"].startswith(("heave_s", "heave_fr_s")):
             continue  # the grid's runs appear in the Fig. 8 table only
         figures = c["plot"](out, args.figures, c["name"]) if c["plot"] else []
         body = [f"## {c['name']}: {c['title']}", "", c["notes"], "", "```", command_line(c),
