@@ -33,6 +33,9 @@ struct SoilMaterialConstants {
   /// rho^s / rho when submerged: (rho_sat - rho_w) / rho_dry, rho_sat = saturated_density or, when
   /// not given, rho_dry + n0 rho_w (pores full of water). 1 in a scene without water.
   double submerged_ratio = 1.0;
+
+  /// The constitutive model a particle uses now: without cohesion once wet (wet_cohesion_loss).
+  const Material& current_model(bool wet) const { return wet ? wet_model : model; }
 };
 
 /// Weights of the periodic stress filter (stress_filter.h).

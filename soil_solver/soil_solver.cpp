@@ -320,7 +320,7 @@ void SoilSolver<D>::update_stresses(double dt) {
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     const SoilMaterialConstants& m = params_.materials[P.material[i]];
-    const Material& model = P.wet[i] ? m.wet_model : m.model;  // cohesion lost once wet
+    const Material& model = m.current_model(P.wet[i] != 0);
     const Eigen::Matrix3d& grad_v = P.velocity_gradient[i];
     PlasticState plastic{P.plastic_strain[i], false};
     P.stress[i] = update_stress(model, P.stress[i], strain_rate(grad_v), spin(grad_v), dt, plastic);

@@ -39,8 +39,9 @@ namespace porosph::soil {
 constexpr double kMlsMinScaledDeterminant = 1e-2;
 /// Largest sum of |w_ij| the first-order weights may have (shepard: 1; a lattice surface row
 /// ~1.2). Beyond it a near-degenerate neighbourhood (the thin front of a granular flow) would
-/// amplify stress differences at every filtering (measured: a granular collapse blew up at
-/// 0.26 s without this bound); shepard is used there instead.
+/// amplify stress differences at every filtering; shepard is used there instead. A precaution:
+/// no run has been shown to need it (the granular collapse that went non-finite with the filter
+/// did so through the 0 / 0 of the scaling back, fixed in drucker_prager.h, with shepard too).
 constexpr double kMlsMaxAbsWeightSum = 2.0;
 
 /// Filtered stress of free particle i (see the file comment).
@@ -96,7 +97,7 @@ void filter_soil_stress(StressFilterKind kind, const sph::NeighbourList<D>& neig
   for (std::int64_t i = 0; i < n; ++i) {
     const SoilMaterialConstants& m = params.materials[P.material[i]];
     P.stress[i] = scratch[i];
-    apply_return_corrections(P.wet[i] ? m.wet_model : m.model, P.stress[i]);
+    apply_return_corrections(m.current_model(P.wet[i] != 0), P.stress[i]);
   }
 }
 
