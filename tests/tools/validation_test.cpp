@@ -72,6 +72,37 @@ TEST(Validation, RockfillBIsMeasuredFromTheToeToTheMostUpstreamMovedSlopeParticl
   EXPECT_TRUE(std::isnan(validation::lowest_in_band(s, 1, 0.0, 3.0)));
 }
 
+// The Dupuit-Forchheimer water table against the Darcy closed form (b = 0: H = sqrt(2 a q L)) and
+// against an independent integration of its ODE -dH/dx = a q / H + b q^2 / H^2 (RK4 upstream from
+// a small exit height, whose own contribution is below 1e-6 m): the bisection's 1e-12 relative
+// tolerance and the 1e-5 m step leave errors far below 1e-6 m, so 1e-5 m catches any wrong term
+// (dropping b or a changes H at 1.6 m by centimetres for the rockfill gravel).
+TEST(Validation, DupuitForchheimerWaterTable) {
+  EXPECT_NEAR(validation::dupuit_forchheimer_height(1.5, 0.01, 0.2, 0.0),
+              std::sqrt(2 * 0.2 * 0.01 * 1.5), 1e-12);
+  EXPECT_EQ(validation::dupuit_forchheimer_height(0.0, 0.01, 0.2, 5.0), 0.0);
+  const double a = 0.1142, b = 9.33, q = 7.74e-3;  // rockfill gravel (Den Adel), Q 19.36 l/s
+  const auto slope = [&](double h) { return a * q / h + b * q * q / (h * h); };
+  double h = 1e-3, distance = h * h * h / (3 * b * q * q);  // exact near the exit: b dominates
+  const double dx = 1e-5;
+  for (double target : {0.2, 0.7, 1.6}) {
+    while (distance < target - 0.5 * dx) {
+      const double k1 = slope(h), k2 = slope(h + 0.5 * dx * k1), k3 = slope(h + 0.5 * dx * k2),
+                   k4 = slope(h + dx * k3);
+      h += dx * (k1 + 2 * k2 + 2 * k3 + k4) / 6;
+      distance += dx;
+    }
+    EXPECT_NEAR(validation::dupuit_forchheimer_height(target, q, a, b), h, 1e-5) << target;
+  }
+  // Both terms matter here: Darcy alone or the quadratic term alone give other tables.
+  const double h16 = validation::dupuit_forchheimer_height(1.6, q, a, b);
+  EXPECT_GT(h16 - validation::dupuit_forchheimer_height(1.6, q, a, 0.0), 0.05);
+  EXPECT_GT(h16 - validation::dupuit_forchheimer_height(1.6, q, 0.0, b), 0.005);
+  // Pure Forchheimer (a = 0): H = (3 b q^2 L)^(1/3).
+  EXPECT_NEAR(validation::dupuit_forchheimer_height(1.6, q, 0.0, b), std::cbrt(3 * b * q * q * 1.6),
+              1e-9);
+}
+
 TEST(Validation, MissingRunDirectoryIsAClearError) {
   try {
     validation::read_run_json("/nonexistent/run");

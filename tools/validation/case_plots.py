@@ -151,6 +151,17 @@ def rockfill(out, figures, name):
         ax.set_ylabel("B [m]")
         ax.legend()
         paths.append(save(fig, figures, name, "B"))
+    ts = read_csv(os.path.join(out, "timeseries.csv"))
+    levels = [k for k in ts if k.startswith("level_x")]
+    if levels:
+        fig, ax = plt.subplots(figsize=(5, 3.5))
+        for k in levels:
+            ax.plot(ts["t"], ts[k], label=f"x = {int(k[7:]) / 100:.1f} m")
+        ax.set_xlabel("t [s]")
+        ax.set_ylabel("water level in the shell [m]")
+        ax.set_title("phreatic surface (Dupuit-Forchheimer on the porosity plot)")
+        ax.legend()
+        paths.append(save(fig, figures, name, "levels"))
     snap, t = last_snapshot(os.path.join(out, "soil.h5"))
     x = free_field(snap, "position")
     n = free_field(snap, "porosity")
@@ -160,6 +171,11 @@ def rockfill(out, figures, name):
     sc = ax.scatter(x[:, 0], x[:, 1], c=n, s=3, cmap="copper_r")
     fig.colorbar(sc, ax=ax, label="porosity")
     ax.scatter(w[:, 0], w[:, 1], s=1, c="tab:blue", alpha=0.4, label="water")
+    dupuit = series.replace(".csv", "_dupuit.csv")
+    if os.path.exists(dupuit):
+        d = read_csv(dupuit)
+        ax.plot(d["x"], d["h"], "k--", lw=1, label="Dupuit-Forchheimer water table")
+        ax.legend(loc="upper right", fontsize=7)
     ax.set_aspect("equal")
     ax.set_xlim(-0.1, 3.3)
     ax.set_title(f"porosity and water at t = {t:.1f} s")

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "io/snapshot_reader.h"
+#include "soil_solver/permeability.h"
 #include "tools/validation/run_directory.h"
 
 namespace porosph::validation {
@@ -65,6 +66,28 @@ double rockfill_b(const SoilParticles2D& soil, double x_toe, double x_crest, dou
     x_most_upstream = std::min(x_most_upstream, x0);
   }
   return x_toe - x_most_upstream;
+}
+
+double dupuit_forchheimer_height(double distance_from_exit, double discharge_per_metre, double a,
+                                 double b) {
+  const double q = discharge_per_metre;
+  if (!(distance_from_exit > 0) || !(q > 0) || a < 0 || b < 0 || a + b == 0) return 0.0;
+  // Distance from the exit at which the table reaches height h (increasing in h).
+  const auto length_of = [a, b, q](double h) {
+    if (b == 0) return h * h / (2 * a * q);
+    const double x = a * h / (b * q);  // h / c
+    if (x < 1e-2)                      // series of c^2 ln(1 + x): the closed form cancels
+      return h * h * h / (3 * b * q * q) * (1 - 0.75 * x + 0.6 * x * x);
+    const double c = b * q / a;
+    return (0.5 * h * h - c * h + c * c * std::log1p(x)) / (a * q);
+  };
+  double lo = 0, hi = 1e-3;
+  while (length_of(hi) < distance_from_exit) hi *= 2;
+  for (int k = 0; k < 200 && hi - lo > 1e-12 * hi; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (length_of(mid) < distance_from_exit ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
 }
 
 double lowest_in_band(const SoilParticles2D& soil, std::int64_t material, double x_lo,
@@ -128,11 +151,33 @@ RockfillCheck check_rockfill(const std::string& run_dir) {
       }
     }
   }
+  const auto& gravel = soil.at("materials").at(0);
+  const auto& water = p.at("water");
+  double g = 0;
+  for (const auto& component : p.at("run").at("gravity")) g += std::pow(component.get<double>(), 2);
+  const auto coefficients = soil::forchheimer_den_adel(
+      gravel.at("porosity").get<double>(), c.d15, std::sqrt(g),
+      water.at("viscosity").get<double>() / water.at("rho0").get<double>(),
+      gravel.at("den_adel_alpha").get<double>(), gravel.at("den_adel_beta").get<double>());
+  c.seepage_a = coefficients.a;
+  c.seepage_b = coefficients.b;
+  for (int k = 0; k <= 100; ++k) {
+    c.dupuit_x.push_back(c.x_toe * k / 100.0);
+    c.dupuit_h.push_back(dupuit_forchheimer_height(
+        c.x_toe - c.dupuit_x.back(), c.discharge_per_metre, c.seepage_a, c.seepage_b));
+  }
   const auto ts = read_timeseries(run_dir);
   for (const auto& name : ts.names) {
     if (name.rfind("level_x", 0) != 0) continue;
     c.level_names.push_back(name);
     c.levels.push_back(mean_from(ts, name, 0.9 * c.time));
+    double x = kNaN;
+    for (const auto& o : p.value("observables", nlohmann::json::array()))
+      if (o.at("name").get<std::string>() == name)
+        x = 0.5 * (o.at("region_min").at(0).get<double>() + o.at("region_max").at(0).get<double>());
+    c.level_x.push_back(x);
+    c.level_dupuit.push_back(
+        dupuit_forchheimer_height(c.x_toe - x, c.discharge_per_metre, c.seepage_a, c.seepage_b));
   }
   return c;
 }

@@ -28,6 +28,19 @@ struct SoilParticles2D {
 double rockfill_b(const SoilParticles2D& soil, double x_toe, double x_crest, double threshold,
                   double wet_saturation = -1);
 
+/// Steady phreatic height H [m] at a distance L [m] upstream of the seepage exit of a horizontal
+/// aquifer carrying the discharge per metre q [m^2/s] (Dupuit-Forchheimer: horizontal flow, the
+/// specific discharge u = q / H uniform over the height, the slope of the water table the
+/// hydraulic gradient i = a u + b u^2 of eq. 13, H = 0 at the exit). Integrating
+/// -dH/dx = a q / H + b q^2 / H^2 from the exit gives, with c = b q / a,
+///   a q L = H^2 / 2 - c H + c^2 ln(1 + H / c),
+/// solved for H by bisection (the right side grows with H). b = 0: Darcy, H = sqrt(2 a q L);
+/// a = 0: H = (3 b q^2 L)^(1/3).
+/// A reference for the level inside the shell away from the toe: near the exit the flow is not
+/// horizontal and a seepage face forms (the Dupuit height there is too low).
+double dupuit_forchheimer_height(double distance_from_exit, double discharge_per_metre, double a,
+                                 double b);
+
 /// Lowest y of a free particle of `material` whose x lies in [x_lo, x_hi]; NaN if there is none.
 double lowest_in_band(const SoilParticles2D& soil, std::int64_t material, double x_lo, double x_hi);
 
@@ -42,10 +55,14 @@ struct RockfillCheck {
   double wet_saturation = 0.1;
   std::array<double, 3> thresholds{}, b{}, b_wet{};
   std::vector<double> times, b_history, b_wet_history;  ///< at threshold D15, every snapshot
-  double b_experiment = -1;              ///< 0.32 m / 0.68 m for Q 19.36 / 30.45 l/s; < 0: none
-  double b_paper_sph = -1;               ///< 0.317 / 0.697
-  std::vector<std::string> level_names;  ///< observables level_x* of timeseries.csv
-  std::vector<double> levels;            ///< their mean over the last 10 % of the run [m]
+  double b_experiment = -1;                ///< 0.32 m / 0.68 m for Q 19.36 / 30.45 l/s; < 0: none
+  double b_paper_sph = -1;                 ///< 0.317 / 0.697
+  std::vector<std::string> level_names;    ///< observables level_x* of timeseries.csv
+  std::vector<double> levels;              ///< their mean over the last 10 % of the run [m]
+  std::vector<double> level_x;             ///< where each is measured (its region's centre) [m]
+  std::vector<double> level_dupuit;        ///< dupuit_forchheimer_height there, exit at the toe [m]
+  double seepage_a = 0, seepage_b = 0;     ///< eq. 13 coefficients at the initial porosity
+  std::vector<double> dupuit_x, dupuit_h;  ///< the whole Dupuit-Forchheimer table, core to toe
   std::size_t particles = 0;
 };
 

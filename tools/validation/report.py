@@ -6,6 +6,8 @@ reference and writes docs/validation.md with the figures in docs/validation/.
   tools/validation/report.py                  # read finished runs in runs/validation/, write the report
   tools/validation/report.py --run            # first run every case whose run is missing (hours)
   tools/validation/report.py --run --only hydraulic_heave rockfill_q19
+                                              # --only: rewrite these cases' rows and sections,
+                                              # keep every other case as the existing report has it
   tools/validation/report.py --list           # the cases, their scenes and overrides
 
 Needs python3-numpy, python3-h5py and python3-matplotlib (Debian packages; scripts/report.sh
@@ -16,6 +18,7 @@ import argparse
 import csv
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -66,13 +69,17 @@ CASES = [
                "docs/validation-studies.md."),
     case("rockfill_q19", "Rockfill core overtopping (paper 4.2), Q = 19.36 l/s",
          "cases/rockfill_overtopping/scene.toml", "rockfill_overtopping",
-         overrides=["run.dp=0.02"], plot=case_plots.rockfill,
-         notes="dp 0.02 m (half the CASES.md resolution), flume width W = 2.5 m (assumed)."),
+         overrides=["run.dp=0.02", "run.end_time=300.2", "run.checkpoint_wall_minutes=10"],
+         plot=case_plots.rockfill, run_dir="../long/rockfill_q19",
+         notes="dp 0.02 m (half the CASES.md resolution), flume width W = 2.5 m (assumed); run "
+               "towards the experiment's steady state (~300 s), checkpointed."),
     case("rockfill_q30", "Rockfill core overtopping (paper 4.2), Q = 30.45 l/s",
          "cases/rockfill_overtopping/scene.toml", "rockfill_overtopping",
-         overrides=["run.dp=0.02", "water.inflow[0].flow_rate=0.03045"],
-         plot=case_plots.rockfill,
-         notes="dp 0.02 m, W = 2.5 m (assumed)."),
+         overrides=["run.dp=0.02", "run.end_time=300.2", "run.checkpoint_wall_minutes=10",
+                    "water.inflow[0].flow_rate=0.03045"],
+         plot=case_plots.rockfill, run_dir="../long/rockfill_q30",
+         notes="dp 0.02 m, W = 2.5 m (assumed); run towards the experiment's steady state, "
+               "checkpointed."),
     case("hydraulic_heave", "Hydraulic heave next to a sheet pile (paper 4.3), phi 29 / 40",
          "cases/hydraulic_heave/scene.toml", "hydraulic_heave", overrides=["run.dp=0.005"],
          plot=case_plots.hydraulic_heave,
@@ -195,6 +202,27 @@ def heave_grid_section(args):
     return "\n".join(text) + "\n"
 
 
+def previous_report(path):
+    """The rows and sections of an existing report by case name (and its Fig. 8 section), so that
+    --only can rewrite some cases and keep the others as they were measured."""
+    rows, sections, grid = {}, {}, ""
+    if not os.path.exists(path):
+        return rows, sections, grid
+    with open(path) as f:
+        text = f.read()
+    for line in text.splitlines():
+        cells = line.split(" | ")
+        if line.startswith("| ") and len(cells) > 2 and not line.startswith(("| case", "| ---")):
+            rows.setdefault(cells[0][2:].strip(), []).append(line)
+    for block in re.split(r"\n(?=## )", text)[1:]:
+        title = block.splitlines()[0]
+        if title.startswith("## Failure time against"):
+            grid = block.rstrip("\n") + "\n"
+        else:
+            sections[title[3:].split(":")[0]] = block.rstrip("\n") + "\n"
+    return rows, sections, grid
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--runs", default=os.path.join(ROOT, "runs", "validation"))
@@ -223,9 +251,20 @@ def main():
              "(initial, per phase, walls included) | steps | wall time |",
              "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     sections = []
+    kept_rows, kept_sections, kept_grid = previous_report(args.out) if args.only else ({}, {}, "")
     for c in CASES:
+        if args.only and c["name"] not in args.only:
+            table += kept_rows.get(c["name"], [f"| {c['name']} | not run | | | | | | | | |"])
+            if c["name"] in kept_sections:
+                sections.append(kept_sections[c["name"]])
+            continue
         out = run_path(c, args)
         if not os.path.exists(os.path.join(out, "run.json")):
+            if c["name"] in kept_rows:
+                print(f"{c['name']}: no run in {out}; the previous report's figures are kept")
+                table += kept_rows[c["name"]]
+                sections += [kept_sections[c["name"]]] if c["name"] in kept_sections else []
+                continue
             table.append(f"| {c['name']} | not run | | | | | | | | |")
             continue
         facts = run_facts(out)
@@ -263,8 +302,12 @@ def main():
               "shared the two cores: they rank the cases, they are not throughput figures "
               "(those are in docs/performance.md).",
               ""]
+    grid_cases = [c["name"] for c in CASES if c["name"].startswith(("heave_s", "heave_fr_s"))]
+    grid = (kept_grid if args.only and not set(args.only) & set(grid_cases + ["hydraulic_heave",
+                                                                              "heave_eq10"])
+            else heave_grid_section(args))
     with open(args.out, "w") as f:
-        f.write("\n".join(header + table) + "\n\n" + heave_grid_section(args) + "\n"
+        f.write("\n".join(header + table) + "\n\n" + grid + "\n"
                 + "\n".join(sections))
     shutil.rmtree(scratch, ignore_errors=True)
     print("wrote", args.out)

@@ -5,7 +5,7 @@
 //   porosph_validate granular_collapse RUN_DIR
 //   porosph_validate darcy_column RUN_DIR
 //   porosph_validate fluidized_bed RUN_DIR [--window SECONDS]
-//   porosph_validate rockfill_overtopping RUN_DIR [--series FILE]
+//   porosph_validate rockfill_overtopping RUN_DIR [--series FILE]   (also FILE_dupuit.csv)
 //   porosph_validate hydraulic_heave RUN_DIR [--series FILE]
 // Exit code 0 when the target is met, 1 when not, 2 on unreadable input.
 #include <CLI/CLI.hpp>
@@ -149,10 +149,18 @@ int report_rockfill(const porosph::validation::RockfillCheck& c, const std::stri
         c.b_wet_history[n / 2], c.times[n / 2], c.b_wet_history[(9 * n) / 10],
         c.times[(9 * n) / 10], b);
   }
+  std::printf("seepage (eq. 13, initial porosity): a = %.4f s/m, b = %.3f s^2/m^2\n", c.seepage_a,
+              c.seepage_b);
   for (std::size_t k = 0; k < c.levels.size(); ++k) {
-    std::printf("steady water level %s: %.3f m\n", c.level_names[k].c_str(), c.levels[k]);
+    std::printf(
+        "steady water level %s (x = %.2f m): %.3f m; Dupuit-Forchheimer %.3f m (exit at the toe)\n",
+        c.level_names[k].c_str(), c.level_x[k], c.levels[k], c.level_dupuit[k]);
   }
   write_series(series, {"t", "B_wet", "B_all"}, {&c.times, &c.b_wet_history, &c.b_history});
+  if (!series.empty()) {  // the reference water table beside it: SERIES_dupuit.csv
+    const auto stem = series.substr(0, series.rfind(".csv"));
+    write_series(stem + "_dupuit.csv", {"x", "h"}, {&c.dupuit_x, &c.dupuit_h});
+  }
   if (c.b_experiment < 0) {
     std::printf("no experiment for this flow rate\n");
     print_summary("B parameter (wet, D15)", fmt("%.3f m", b), "none for this Q", "-", "-", -1);
