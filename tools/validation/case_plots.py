@@ -232,3 +232,20 @@ def heave_grid(fits, figures):
     ax.legend(fontsize=7)
     return save(fig, figures, "hydraulic_heave", "grid")
 
+
+
+def rockfill_b_against_q(rows, figures):
+    """rows: (discharge per metre [m^2/s], Q [l/s], W [m], B [m]) of the rockfill runs."""
+    fig, ax = plt.subplots(figsize=(5, 3.5))
+    for flow, marker in ((19.36, "o"), (30.45, "s")):
+        pts = sorted((1e3 * q, b) for (q, qq, w, b) in rows if abs(qq - flow) < 0.01)
+        if pts:
+            ax.plot(*zip(*pts), marker, label=f"PoroSPH, Q = {flow} l/s (W varied)")
+    for b_exp, flow in ((0.32, 19.36), (0.68, 30.45)):
+        ax.axhline(b_exp, color="k", ls="--", lw=0.8)
+        ax.text(1, b_exp + 0.01, f"experiment, Q = {flow} l/s", fontsize=7)
+    ax.set_xlabel("discharge per metre q = Q / W [l/s/m]")
+    ax.set_ylabel("B (wet particles moved > D15) [m]")
+    ax.set_xlim(left=0)
+    ax.legend(fontsize=7)
+    return save(fig, figures, "rockfill", "B_vs_q")

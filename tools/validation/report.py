@@ -80,6 +80,19 @@ CASES = [
          plot=case_plots.rockfill, run_dir="../long/rockfill_q30",
          notes="dp 0.02 m, W = 2.5 m (assumed); run towards the experiment's steady state, "
                "checkpointed."),
+] + [
+    case(f"rockfill_q{q}_{tag}", f"Rockfill core overtopping, Q = {Q} l/s in a flume of W = {w} m "
+         "(the flume-width sensitivity)", "cases/rockfill_overtopping/scene.toml",
+         "rockfill_overtopping",
+         overrides=["run.dp=0.02", "run.end_time=300.2", "run.checkpoint_wall_minutes=10",
+                    f"water.inflow[0].flow_rate={Q / 1000:.5f}",
+                    f"water.inflow[0].cross_section={0.04 * w:.2f}"],
+         plot=case_plots.rockfill, run_dir=f"../long/rockfill_q{q}_{tag}",
+         notes=f"dp 0.02 m; flume width W = {w} m instead of the scene's assumed 2.5 m, so "
+               f"q = Q / W is {2.5 / w:g} times the scene's (docs/validation-studies.md, "
+               "\"Rockfill to steady state\").")
+    for (tag, w) in [("w125", 1.25), ("w100", 1.0)] for (q, Q) in [(19, 19.36), (30, 30.45)]
+] + [
     case("hydraulic_heave", "Hydraulic heave next to a sheet pile (paper 4.3), phi 29 / 40",
          "cases/hydraulic_heave/scene.toml", "hydraulic_heave", overrides=["run.dp=0.005"],
          plot=case_plots.hydraulic_heave,
@@ -155,8 +168,11 @@ def run_facts(out):
     with open(os.path.join(out, "run.json")) as f:
         run = json.load(f)
     particles = {p: v["initial"]["particle_count"] for p, v in run["phases"].items()}
+    status = run["status"]
+    if status == "failed" and run.get("message", "").startswith("interrupted by signal"):
+        status = "stopped (signal; checkpointed, `coupler run --resume` continues it)"
     return dict(particles=particles, steps=run["steps"], wall=run["wall_seconds"]["total"],
-                status=run["status"], time=run["simulated_time"])
+                status=status, time=run["simulated_time"])
 
 
 def command_line(c):
@@ -202,10 +218,43 @@ def heave_grid_section(args):
     return "\n".join(text) + "\n"
 
 
+def rockfill_width_section(args, b_values):
+    """B against the discharge per metre over the rockfill runs (the flume width W is not known:
+    each run's q = Q / W). b_values: case name -> the B its check reported."""
+    rows = []
+    for c in CASES:
+        if c["name"] not in b_values:
+            continue
+        name, b = c["name"], b_values[c["name"]]
+        with open(os.path.join(run_path(c, args), "run.json")) as f:
+            run = json.load(f)
+        inflow = run["parameters"]["water"]["inflow"][0]
+        width = inflow["cross_section"] / (inflow["max"][1] - inflow["min"][1])
+        rows.append((inflow["flow_rate"] / width, 1e3 * inflow["flow_rate"], width, b,
+                     run["simulated_time"], name))
+    if not rows:
+        return ""
+    rows.sort()
+    text = ["## Rockfill: B against the discharge per metre (the flume width)", "",
+            "The paper gives Q, not the flume width W; the 2D model needs q = Q / W. Each row is "
+            "one run of cases/rockfill_overtopping/scene.toml (dp 0.02 m) with "
+            "`--set 'water.inflow[0].cross_section=0.04 W'` (the scene assumes W = 2.5 m).", "",
+            "| case | Q [l/s] | W [m] | q [l/s/m] | B (wet, moved > D15) | experiment at this Q "
+            "| run to |", "| --- | --- | --- | --- | --- | --- | --- |"]
+    for (q, flow, width, b, t, name) in rows:
+        exp = {19.36: "0.32 m", 30.45: "0.68 m"}.get(round(flow, 2), "-")
+        text.append(f"| {name} | {flow:.2f} | {width:.2f} | {1e3 * q:.1f} | {b:.3f} m | {exp} | "
+                    f"{t:.1f} s |")
+    figure = case_plots.rockfill_b_against_q([r[:4] for r in rows], args.figures)
+    text += ["", f"![B against q]({os.path.relpath(figure, args.docs)})"]
+    return "\n".join(text) + "\n"
+
+
 def previous_report(path):
-    """The rows and sections of an existing report by case name (and its Fig. 8 section), so that
-    --only can rewrite some cases and keep the others as they were measured."""
-    rows, sections, grid = {}, {}, ""
+    """The rows and sections of an existing report by case name (and its sections over several
+    cases: "heave", the Fig. 8 grid; "rockfill", B against q), so that --only can rewrite some
+    cases and keep the others as they were measured."""
+    rows, sections, grid = {}, {}, {}
     if not os.path.exists(path):
         return rows, sections, grid
     with open(path) as f:
@@ -217,7 +266,9 @@ def previous_report(path):
     for block in re.split(r"\n(?=## )", text)[1:]:
         title = block.splitlines()[0]
         if title.startswith("## Failure time against"):
-            grid = block.rstrip("\n") + "\n"
+            grid["heave"] = block.rstrip("\n") + "\n"
+        elif title.startswith("## Rockfill: B against"):
+            grid["rockfill"] = block.rstrip("\n") + "\n"
         else:
             sections[title[3:].split(":")[0]] = block.rstrip("\n") + "\n"
     return rows, sections, grid
@@ -251,7 +302,8 @@ def main():
              "(initial, per phase, walls included) | steps | wall time |",
              "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     sections = []
-    kept_rows, kept_sections, kept_grid = previous_report(args.out) if args.only else ({}, {}, "")
+    rockfill_b = {}
+    kept_rows, kept_sections, kept_grid = previous_report(args.out) if args.only else ({}, {}, {})
     for c in CASES:
         if args.only and c["name"] not in args.only:
             table += kept_rows.get(c["name"], [f"| {c['name']} | not run | | | | | | | | |"])
@@ -274,6 +326,8 @@ def main():
         text, summaries = validate(c, args, out)
         state = f"partial: running, t = {facts['time']:.1f} s so far; " if partial else ""
         particles = ", ".join(f"{p} {n:,}" for p, n in facts["particles"].items())
+        if c["check"] == "rockfill_overtopping" and summaries:
+            rockfill_b[c["name"]] = float(summaries[0][1].split()[0])
         for cells in summaries:
             quantity, value, reference, error, target, verdict = (x.replace("|", "\\|")
                                                                   for x in cells)
@@ -303,9 +357,14 @@ def main():
               "(those are in docs/performance.md).",
               ""]
     grid_cases = [c["name"] for c in CASES if c["name"].startswith(("heave_s", "heave_fr_s"))]
-    grid = (kept_grid if args.only and not set(args.only) & set(grid_cases + ["hydraulic_heave",
-                                                                              "heave_eq10"])
-            else heave_grid_section(args))
+    rockfill_cases = {c["name"] for c in CASES if c["check"] == "rockfill_overtopping"}
+    keep = args.only is not None and not set(args.only) & set(grid_cases + ["hydraulic_heave",
+                                                                          "heave_eq10"])
+    grid = kept_grid.get("heave", "") if keep else heave_grid_section(args)
+    keep = args.only is not None and not set(args.only) & rockfill_cases
+    # Rewritten from the rockfill cases of this invocation (with --only, name them all).
+    grid += "\n" + (kept_grid.get("rockfill", "") if keep else
+                    rockfill_width_section(args, rockfill_b))
     with open(args.out, "w") as f:
         f.write("\n".join(header + table) + "\n\n" + grid + "\n"
                 + "\n".join(sections))
