@@ -16,6 +16,13 @@ ProgressLine::ProgressLine(double end_time, bool enabled, std::FILE* stream)
 
 void ProgressLine::update(double time, std::uint64_t step, double dt) {
   if (!enabled_) return;
+  if (!has_origin_) {
+    // The first step of this process: one step back is where the run started or resumed.
+    has_origin_ = true;
+    origin_time_ = std::max(0.0, time - dt);
+    origin_step_ = step > 0 ? step - 1 : 0;
+    start_ = Clock::now();
+  }
   const auto now = Clock::now();
   const double since_print = std::chrono::duration<double>(now - last_print_).count();
   if (terminal_) {
@@ -37,8 +44,11 @@ void ProgressLine::finish(double time, std::uint64_t step) {
 void ProgressLine::print(double time, std::uint64_t step, double dt, bool final) {
   const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
   const double fraction = std::clamp(time / end_time_, 0.0, 1.0);
-  const double steps_per_second = elapsed > 0 ? static_cast<double>(step) / elapsed : 0.0;
-  const double eta = fraction > 1e-9 ? elapsed * (1.0 - fraction) / fraction : 0.0;
+  const double done_here = time - origin_time_;
+  const double steps_per_second =
+      elapsed > 0 ? static_cast<double>(step - std::min(step, origin_step_)) / elapsed : 0.0;
+  const double eta =
+      done_here > 1e-12 ? elapsed * std::max(0.0, end_time_ - time) / done_here : 0.0;
   std::fprintf(stream_,
                "%st = %.4g / %.4g s  %5.1f%%  step %llu  dt %.3g s  %.0f steps/s  ETA %.0f s%s",
                terminal_ ? "\r" : "", time, end_time_, 100.0 * fraction,
