@@ -15,6 +15,9 @@ import numpy as np  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
+# B [m] of the experiments (Larese et al. 2015; seed paper Table 3) by flow rate Q [l/s].
+ROCKFILL_B_EXPERIMENT = {19.36: 0.32, 30.45: 0.68}
+
 
 def read_csv(path):
     with open(path) as f:
@@ -139,7 +142,7 @@ def rockfill(out, figures, name):
     series = os.path.join(out, "validate_series.csv")
     run = run_json(out)
     q = run["parameters"]["water"]["inflow"][0]["flow_rate"]
-    b_exp = {0.01936: 0.32, 0.03045: 0.68}.get(round(q, 5))
+    b_exp = ROCKFILL_B_EXPERIMENT.get(round(1e3 * q, 2))
     if os.path.exists(series):
         s = read_csv(series)
         fig, ax = plt.subplots(figsize=(5, 3.5))
@@ -233,15 +236,14 @@ def heave_grid(fits, figures):
     return save(fig, figures, "hydraulic_heave", "grid")
 
 
-
 def rockfill_b_against_q(rows, figures):
     """rows: (discharge per metre [m^2/s], Q [l/s], W [m], B [m]) of the rockfill runs."""
     fig, ax = plt.subplots(figsize=(5, 3.5))
-    for flow, marker in ((19.36, "o"), (30.45, "s")):
+    for flow, marker in zip(ROCKFILL_B_EXPERIMENT, ("o", "s")):
         pts = sorted((1e3 * q, b) for (q, qq, w, b) in rows if abs(qq - flow) < 0.01)
         if pts:
             ax.plot(*zip(*pts), marker, label=f"PoroSPH, Q = {flow} l/s (W varied)")
-    for b_exp, flow in ((0.32, 19.36), (0.68, 30.45)):
+    for flow, b_exp in ROCKFILL_B_EXPERIMENT.items():
         ax.axhline(b_exp, color="k", ls="--", lw=0.8)
         ax.text(1, b_exp + 0.01, f"experiment, Q = {flow} l/s", fontsize=7)
     ax.set_xlabel("discharge per metre q = Q / W [l/s/m]")

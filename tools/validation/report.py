@@ -15,7 +15,6 @@ installs them and runs this script). The case list (scene, overrides, validate c
 of each check is in tools/validation/*.h and docs/validation-studies.md.
 """
 import argparse
-import csv
 import json
 import os
 import re
@@ -242,7 +241,8 @@ def rockfill_width_section(args, b_values):
             "| case | Q [l/s] | W [m] | q [l/s/m] | B (wet, moved > D15) | experiment at this Q "
             "| run to |", "| --- | --- | --- | --- | --- | --- | --- |"]
     for (q, flow, width, b, t, name) in rows:
-        exp = {19.36: "0.32 m", 30.45: "0.68 m"}.get(round(flow, 2), "-")
+        b_exp = case_plots.ROCKFILL_B_EXPERIMENT.get(round(flow, 2))
+        exp = f"{b_exp} m" if b_exp is not None else "-"
         text.append(f"| {name} | {flow:.2f} | {width:.2f} | {1e3 * q:.1f} | {b:.3f} m | {exp} | "
                     f"{t:.1f} s |")
     figure = case_plots.rockfill_b_against_q([r[:4] for r in rows], args.figures)
@@ -254,9 +254,9 @@ def previous_report(path):
     """The rows and sections of an existing report by case name (and its sections over several
     cases: "heave", the Fig. 8 grid; "rockfill", B against q), so that --only can rewrite some
     cases and keep the others as they were measured."""
-    rows, sections, grid = {}, {}, {}
+    rows, sections, multi_case = {}, {}, {}
     if not os.path.exists(path):
-        return rows, sections, grid
+        return rows, sections, multi_case
     with open(path) as f:
         text = f.read()
     for line in text.splitlines():
@@ -266,12 +266,12 @@ def previous_report(path):
     for block in re.split(r"\n(?=## )", text)[1:]:
         title = block.splitlines()[0]
         if title.startswith("## Failure time against"):
-            grid["heave"] = block.rstrip("\n") + "\n"
+            multi_case["heave"] = block.rstrip("\n") + "\n"
         elif title.startswith("## Rockfill: B against"):
-            grid["rockfill"] = block.rstrip("\n") + "\n"
+            multi_case["rockfill"] = block.rstrip("\n") + "\n"
         else:
             sections[title[3:].split(":")[0]] = block.rstrip("\n") + "\n"
-    return rows, sections, grid
+    return rows, sections, multi_case
 
 
 def main():
@@ -303,7 +303,7 @@ def main():
              "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     sections = []
     rockfill_b = {}
-    kept_rows, kept_sections, kept_grid = previous_report(args.out) if args.only else ({}, {}, {})
+    kept_rows, kept_sections, kept_multi = previous_report(args.out) if args.only else ({}, {}, {})
     for c in CASES:
         if args.only and c["name"] not in args.only:
             table += kept_rows.get(c["name"], [f"| {c['name']} | not run | | | | | | | | |"])
@@ -360,10 +360,10 @@ def main():
     rockfill_cases = {c["name"] for c in CASES if c["check"] == "rockfill_overtopping"}
     keep = args.only is not None and not set(args.only) & set(grid_cases + ["hydraulic_heave",
                                                                           "heave_eq10"])
-    grid = kept_grid.get("heave", "") if keep else heave_grid_section(args)
+    grid = kept_multi.get("heave", "") if keep else heave_grid_section(args)
     keep = args.only is not None and not set(args.only) & rockfill_cases
     # Rewritten from the rockfill cases of this invocation (with --only, name them all).
-    grid += "\n" + (kept_grid.get("rockfill", "") if keep else
+    grid += "\n" + (kept_multi.get("rockfill", "") if keep else
                     rockfill_width_section(args, rockfill_b))
     with open(args.out, "w") as f:
         f.write("\n".join(header + table) + "\n\n" + grid + "\n"
