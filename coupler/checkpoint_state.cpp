@@ -98,7 +98,9 @@ json phase_state(const PhaseRecord& p) {
           {"initial", diagnostics_state(p.initial)},
           {"last", diagnostics_state(p.last)},
           {"snapshots", snapshots},
-          {"physics_seconds", exact(p.physics_seconds)}};
+          {"physics_seconds", exact(p.reported.physics_seconds)},
+          {"wall_seconds", exact(p.reported.wall_seconds)},
+          {"communication_seconds", exact(p.reported.communication_seconds)}};
 }
 
 void restore_phase(const json& j, PhaseRecord& p) {
@@ -113,7 +115,12 @@ void restore_phase(const json& j, PhaseRecord& p) {
     p.snapshots.push_back({s.at("index").get<std::uint32_t>(), exact_of(s.at("time")),
                            s.at("particles").get<std::size_t>()});
   }
-  p.physics_seconds = exact_of(j.at("physics_seconds"));
+  p.reported.physics_seconds = exact_of(j.at("physics_seconds"));
+  // Checkpoints written before the solvers reported wall and communication time lack them.
+  p.reported.wall_seconds = j.contains("wall_seconds") ? exact_of(j.at("wall_seconds")) : 0.0;
+  p.reported.communication_seconds =
+      j.contains("communication_seconds") ? exact_of(j.at("communication_seconds")) : 0.0;
+  p.before_resume = p.reported;
 }
 
 json interaction_state(const InteractionRecord& r) {

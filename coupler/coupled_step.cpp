@@ -160,7 +160,9 @@ void CoupledStepLoop::absorb_state(const std::string& phase, coupling::StepState
   if (record_.steps == 0) phase_record.initial = d;
   phase_record.last = d;
   if (!d.terms.empty()) phase_record.terms = d.terms;  // sent with the first state only
-  phase_record.physics_seconds += d.physics_seconds;
+  phase_record.reported.wall_seconds += d.wall_seconds;
+  phase_record.reported.physics_seconds += d.physics_seconds;
+  phase_record.reported.communication_seconds += d.communication_seconds;
   for (const auto& observable : scene_.observables) {
     if (observable.phase != phase) continue;
     const auto it = d.observables.find(observable.name);

@@ -77,10 +77,10 @@ json phase_json(const PhaseRecord& p) {
   out["final"] = diagnostics_json(p.last);
   out["snapshots"] = p.snapshots.size();
   out["terms"] = p.terms;
-  out["wall_seconds"] = {
-      {"total", number(p.timing.wall_seconds)},
-      {"physics", number(p.finished ? p.timing.physics_seconds : p.physics_seconds)},
-      {"communication", number(p.timing.communication_seconds)}};
+  const coupling::Timing timing = phase_timing(p);
+  out["wall_seconds"] = {{"total", number(timing.wall_seconds)},
+                         {"physics", number(timing.physics_seconds)},
+                         {"communication", number(timing.communication_seconds)}};
   out["finished"] = p.finished;
   return out;
 }
@@ -132,6 +132,15 @@ double ConservationLedger::relative_imbalance() const {
   for (std::size_t k = 0; k < total.size(); ++k)
     total[k] = impulse_to_water[k] + impulse_to_soil[k];
   return impulse_magnitude_sum > 0 ? norm(total) / impulse_magnitude_sum : 0.0;
+}
+
+coupling::Timing phase_timing(const PhaseRecord& p) {
+  if (!p.finished) return p.reported;
+  coupling::Timing t = p.before_resume;
+  t.wall_seconds += p.timing.wall_seconds;
+  t.physics_seconds += p.timing.physics_seconds;
+  t.communication_seconds += p.timing.communication_seconds;
+  return t;
 }
 
 void RunRecord::record_dt(double dt, double dt_limit) {

@@ -56,11 +56,20 @@ struct PhaseRecord {
   coupling::Diagnostics initial;
   coupling::Diagnostics last;
   std::vector<io::XdmfSnapshot> snapshots;
-  coupling::Timing timing;
+  coupling::Timing timing;  ///< the solver's Goodbye: this process only (not earlier segments)
   std::vector<std::string> terms;  ///< the physics terms the solver reported (run.json)
   bool finished = false;           ///< said Goodbye
-  double physics_seconds = 0;      ///< summed from the per-step reports
+  /// Summed from the per-state reports over all the run's segments (checkpointed).
+  coupling::Timing reported;
+  /// `reported` at the checkpoint this segment resumed from: the earlier segments' share.
+  coupling::Timing before_resume;
 };
+
+/// The phase's wall, physics and communication seconds over all the run's segments: the earlier
+/// segments' reports plus the Goodbye of this one, or the reports alone when the solver did not
+/// say Goodbye (it failed). A solver that leaves the optional per-state wall / communication
+/// fields at 0 gets only its last segment's figures.
+coupling::Timing phase_timing(const PhaseRecord& phase);
 
 struct RunRecord {
   std::string status = "running";  ///< "running" | "completed" | "failed"

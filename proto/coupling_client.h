@@ -46,7 +46,8 @@ struct Diagnostics {
   double mass = 0, kinetic_energy = 0, max_speed = 0;
   std::vector<double> momentum;
   std::map<std::string, double> observables;
-  double physics_seconds = 0;
+  double physics_seconds = 0;  ///< since the last report, as the two below
+  double wall_seconds = 0, communication_seconds = 0;
   double inflow_mass = 0, outflow_mass = 0;  ///< since t = 0: born in inflow zones, removed
   double neighbours_per_particle = 0;        ///< mean neighbour count of a free particle
   /// The physics terms the solver evaluates (first state only; empty afterwards).

@@ -116,8 +116,11 @@ int run_solver_loop(CouplingClient& client, Solver& solver, io::SnapshotWriter& 
     solver.compute_rates();
     return state_is_finite();
   };
-  // Physics wall time since the last report (reported with each state) and in all.
+  // Physics wall time since the last report (reported with each state) and in all; the wall and
+  // communication time of the process are reported the same way.
   double physics_since_report = 0.0;
+  auto last_report = start;
+  double communication_reported = 0.0;
   const auto timed = [&](auto&& work) {
     const auto t0 = Clock::now();
     const bool ok = work();
@@ -146,6 +149,12 @@ int run_solver_loop(CouplingClient& client, Solver& solver, io::SnapshotWriter& 
     });
     state.diagnostics.physics_seconds = physics_since_report;
     physics_since_report = 0.0;
+    const auto now = Clock::now();
+    state.diagnostics.wall_seconds = std::chrono::duration<double>(now - last_report).count();
+    last_report = now;
+    state.diagnostics.communication_seconds =
+        client.communication_seconds() - communication_reported;
+    communication_reported = client.communication_seconds();
     state.checkpoint_written = checkpoint_written;
     checkpoint_written = 0;
     client.send_state(state);

@@ -32,6 +32,8 @@ void to_wire(const coupling::Diagnostics& in, Diagnostics& out) {
   out.set_kinetic_energy(in.kinetic_energy);
   out.set_max_speed(in.max_speed);
   out.set_physics_seconds(in.physics_seconds);
+  out.set_wall_seconds(in.wall_seconds);
+  out.set_communication_seconds(in.communication_seconds);
   out.set_inflow_mass(in.inflow_mass);
   out.set_outflow_mass(in.outflow_mass);
   out.set_neighbours_per_particle(in.neighbours_per_particle);
@@ -56,6 +58,8 @@ void from_wire(const Diagnostics& in, coupling::Diagnostics& out) {
   out.kinetic_energy = in.kinetic_energy();
   out.max_speed = in.max_speed();
   out.physics_seconds = in.physics_seconds();
+  out.wall_seconds = in.wall_seconds();
+  out.communication_seconds = in.communication_seconds();
   out.inflow_mass = in.inflow_mass();
   out.outflow_mass = in.outflow_mass();
   out.neighbours_per_particle = in.neighbours_per_particle();

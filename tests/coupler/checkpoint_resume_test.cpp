@@ -258,12 +258,26 @@ TEST(CheckpointResume, SigtermWritesACheckpointAndTheResumeCompletes) {
   EXPECT_NE(message.find("coupler run --resume " + out), std::string::npos) << message;
   EXPECT_NE(read_text(dir + "/log.txt").find(message), std::string::npos);
   ASSERT_TRUE(fs::exists(out + "/checkpoint/latest.json"));
-  EXPECT_EQ(read_json(out + "/checkpoint/latest.json").at("step"), failed.at("steps"));
+  const auto manifest = read_json(out + "/checkpoint/latest.json");
+  EXPECT_EQ(manifest.at("step"), failed.at("steps"));
+  // The solver's time reports up to the checkpoint, which the resumed run's run.json adds to the
+  // resumed process's own (ResumedPhaseTimingAddsTheEarlierSegments).
+  const auto water_before =
+      read_json(out + "/checkpoint/" + manifest.at("coupler").get<std::string>())
+          .at("record")
+          .at("phases")
+          .at("water");
+  const double wall_before = water_before.at("wall_seconds").get<double>();
+  EXPECT_GT(wall_before, 0.0);
+  EXPECT_GE(wall_before, water_before.at("physics_seconds").get<double>());
+  EXPECT_GT(water_before.at("communication_seconds").get<double>(), 0.0);
 
   const CommandResult resumed =
       run_process({bin("coupler"), "run", "--resume", out, "--no-progress"}, dir + "/resume.txt");
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
-  EXPECT_EQ(read_json(out + "/run.json").at("status"), "completed");
+  const auto record = read_json(out + "/run.json");
+  EXPECT_EQ(record.at("status"), "completed");
+  EXPECT_GT(record.at("wall_seconds").at("water").at("total").get<double>(), wall_before);
   expect_same_timeseries(reference, out);
   expect_same_snapshots(reference, out, "fluid.h5",
                         {"position", "velocity", "density", "pressure"});

@@ -72,7 +72,7 @@ RunRecord sample_record() {
   water.initial.observables["front"] = 0.05;
   water.last.inflow_mass = 0.125;
   water.snapshots = {{0, 0.0, 100}, {1, 0.1000000000000001, 101}};
-  water.physics_seconds = 9.75;
+  water.reported = {12.5, 9.75, 2.25};  // wall, physics, communication
   r.resumes = 2;
   return r;
 }
@@ -113,7 +113,27 @@ TEST(CouplerCheckpointState, RoundTripsBitForBit) {
   EXPECT_EQ(water.snapshots[1].time, 0.1000000000000001);
   EXPECT_EQ(water.snapshots[1].particle_count, 101u);
   EXPECT_EQ(out.resumes, 2u);
+  EXPECT_EQ(water.reported.wall_seconds, 12.5);
+  EXPECT_EQ(water.reported.physics_seconds, 9.75);
+  EXPECT_EQ(water.reported.communication_seconds, 2.25);
   EXPECT_THROW(restore_coupler_state("{}", "test", out, loop_out), std::runtime_error);
+}
+
+// A resumed run's run.json counts the solver time of all its segments: the reports summed up to
+// the checkpoint plus the Goodbye of the resumed process (which knows only its own segment).
+TEST(CouplerCheckpointState, ResumedPhaseTimingAddsTheEarlierSegments) {
+  RunRecord resumed;
+  LoopState loop;
+  restore_coupler_state(coupler_state_json(sample_record(), loop), "test", resumed, loop);
+  PhaseRecord& water = resumed.phases.at("water");
+  water.reported.wall_seconds += 1.0;  // the resumed segment's reports, before its Goodbye
+  EXPECT_EQ(phase_timing(water).wall_seconds, 13.5);  // no Goodbye (failed): the reports
+  water.timing = {4.0, 3.0, 0.5};                     // Goodbye: this process only
+  water.finished = true;
+  const coupling::Timing total = phase_timing(water);
+  EXPECT_EQ(total.wall_seconds, 12.5 + 4.0);
+  EXPECT_EQ(total.physics_seconds, 9.75 + 3.0);
+  EXPECT_EQ(total.communication_seconds, 2.25 + 0.5);
 }
 
 TEST(CheckpointKeeper, FollowsTheIntervalAndNeverTheFinalStep) {

@@ -35,6 +35,8 @@ coupling::StepState sample_state() {
   s.diagnostics.momentum = {0.25, -0.5};
   s.diagnostics.observables = {{"front", 0.3}, {"head", 1.25}};
   s.diagnostics.physics_seconds = 0.01;
+  s.diagnostics.wall_seconds = 0.0125;
+  s.diagnostics.communication_seconds = 0.002;
   s.checkpoint_written = 3;
   return s;
 }
@@ -77,6 +79,8 @@ TEST(WireConvert, StepStateSurvivesSerialisation) {
   EXPECT_EQ(out.diagnostics.momentum, in.diagnostics.momentum);
   EXPECT_EQ(out.diagnostics.observables, in.diagnostics.observables);
   EXPECT_EQ(out.diagnostics.physics_seconds, 0.01);
+  EXPECT_EQ(out.diagnostics.wall_seconds, 0.0125);
+  EXPECT_EQ(out.diagnostics.communication_seconds, 0.002);
   EXPECT_EQ(out.checkpoint_written, in.checkpoint_written);
 }
 
