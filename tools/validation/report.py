@@ -90,7 +90,8 @@ CASES = [
          notes=f"dp 0.02 m; flume width W = {w} m instead of the scene's assumed 2.5 m, so "
                f"q = Q / W is {2.5 / w:g} times the scene's (docs/validation-studies.md, "
                "\"Rockfill to steady state\").")
-    for (tag, w) in [("w125", 1.25), ("w100", 1.0), ("w080", 0.8)] for (q, Q) in [(19, 19.36), (30, 30.45)]
+    for (tag, w) in [("w125", 1.25), ("w100", 1.0), ("w090", 0.9), ("w080", 0.8)]
+    for (q, Q) in [(19, 19.36), (30, 30.45)]
 ] + [
     case("hydraulic_heave", "Hydraulic heave next to a sheet pile (paper 4.3), phi 29 / 40",
          "cases/hydraulic_heave/scene.toml", "hydraulic_heave", overrides=["run.dp=0.005"],
