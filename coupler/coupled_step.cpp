@@ -328,6 +328,7 @@ void CoupledStepLoop::run(ProgressLine& progress) {
     record_.record_dt(dt, dt_min);
     if (checkpoint) {  // the state at the new step boundary, written once the solvers confirm
       loop_.controller_dt = controller_.current();
+      record_.update_wall_seconds();
       checkpoints_.hold(coupler_state_json(record_, loop_), record_.time, record_.steps);
     }
     progress.update(record_.time, record_.steps, dt);

@@ -143,6 +143,17 @@ coupling::Timing phase_timing(const PhaseRecord& p) {
   return t;
 }
 
+void RunRecord::start_segment() {
+  segment_start_ = std::chrono::steady_clock::now();
+  wall_seconds_before_segment_ = wall_seconds;
+}
+
+void RunRecord::update_wall_seconds() {
+  wall_seconds =
+      wall_seconds_before_segment_ +
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - segment_start_).count();
+}
+
 void RunRecord::record_dt(double dt, double dt_limit) {
   if (dt_limit > 0.0) dt_over_limit_max = std::max(dt_over_limit_max, dt / dt_limit);
   dt_min = std::min(dt_min, dt);

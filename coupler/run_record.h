@@ -1,6 +1,7 @@
 // Everything the coupler learns during a run, and how it becomes run.json / run.xdmf.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -81,7 +82,7 @@ struct RunRecord {
   std::uint64_t steps = 0;
   double time = 0;
   double end_time = 0;
-  double wall_seconds = 0;
+  double wall_seconds = 0;     ///< all segments of the run; refreshed by update_wall_seconds()
   double coupler_seconds = 0;  ///< coupler's own work: interaction, dt, bookkeeping, I/O
   double dt_min = std::numeric_limits<double>::infinity();
   double dt_max = 0;
@@ -103,6 +104,16 @@ struct RunRecord {
   /// Books one step's dt and the smallest of that step's limits (solvers' CFL, viscous, eq. 21
   /// and the interaction's eq. 21).
   void record_dt(double dt, double dt_limit);
+  /// Starts this process's segment of the run: wall_seconds counts on from its current value
+  /// (0, or the checkpoint's on a resume).
+  void start_segment();
+  /// wall_seconds = the earlier segments' + this segment's so far (before run.json and each
+  /// checkpoint, so that a checkpoint holds the wall time up to its own step).
+  void update_wall_seconds();
+
+ private:
+  std::chrono::steady_clock::time_point segment_start_ = std::chrono::steady_clock::now();
+  double wall_seconds_before_segment_ = 0;
 };
 
 /// Writes run.json (atomically: temp file + rename).

@@ -62,7 +62,7 @@ std::string fresh_ipc_endpoint() {
 
 class RunSession {
  public:
-  explicit RunSession(const RunOptions& options) : options_(options), started_(Clock::now()) {}
+  explicit RunSession(const RunOptions& options) : options_(options) {}
 
   int run();
 
@@ -80,14 +80,12 @@ class RunSession {
   void write_outputs();
 
   RunOptions options_;
-  Clock::time_point started_;
   scene::Scene scene_;
-  RunRecord record_;
+  RunRecord record_;  ///< its wall clock starts with the session
   std::string out_dir_;
   std::unique_ptr<SolverHub> hub_;
   std::map<std::string, std::unique_ptr<SolverProcess>> processes_;
   std::optional<LoopState> resumed_;         ///< set when resuming
-  double wall_seconds_before_ = 0;           ///< wall time of the run before the resume
   std::set<std::string> phases_without_h5_;  ///< phases whose solver wrote no snapshot file
 };
 
@@ -151,7 +149,7 @@ void RunSession::load_resume_point() {
   record_.status = "running";
   record_.message.clear();
   record_.resumes += 1;
-  wall_seconds_before_ = record_.wall_seconds;
+  record_.start_segment();  // the wall time goes on from the checkpoint's
   resumed_ = loop;
   std::fprintf(stderr, "coupler: resuming %s from checkpoint %u at t = %.9g s (step %llu)\n",
                out_dir_.c_str(), manifest->index, manifest->time,
@@ -297,7 +295,7 @@ void RunSession::shut_down_after_failure(const std::string& reason) {
 }
 
 void RunSession::write_outputs() {
-  record_.wall_seconds = wall_seconds_before_ + seconds_since(started_);
+  record_.update_wall_seconds();
   std::vector<io::XdmfPhaseSeries> series;
   for (const auto& [phase, phase_record] : record_.phases) {
     if (phase_record.snapshots.empty()) continue;

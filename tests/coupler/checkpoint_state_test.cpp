@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <thread>
 
 #include "coupler/checkpoint.h"
 #include "proto/checkpoint_names.h"
@@ -134,6 +136,20 @@ TEST(CouplerCheckpointState, ResumedPhaseTimingAddsTheEarlierSegments) {
   EXPECT_EQ(total.wall_seconds, 12.5 + 4.0);
   EXPECT_EQ(total.physics_seconds, 9.75 + 3.0);
   EXPECT_EQ(total.communication_seconds, 2.25 + 0.5);
+}
+
+// The run's wall time goes on from the checkpoint's, and is current whenever it is refreshed (a
+// checkpoint holds the time up to its own step, not to the last output).
+TEST(CouplerCheckpointState, ResumedRunWallTimeGoesOnFromTheCheckpoint) {
+  RunRecord resumed;
+  LoopState loop;
+  restore_coupler_state(coupler_state_json(sample_record(), loop), "test", resumed, loop);
+  resumed.wall_seconds = 100.0;  // as restored from the checkpoint
+  resumed.start_segment();
+  std::this_thread::sleep_for(std::chrono::milliseconds(30));
+  resumed.update_wall_seconds();
+  EXPECT_GE(resumed.wall_seconds, 100.03);
+  EXPECT_LT(resumed.wall_seconds, 110.0);  // 10 s: a loaded machine, far below a second segment
 }
 
 TEST(CheckpointKeeper, FollowsTheIntervalAndNeverTheFinalStep) {
