@@ -152,9 +152,9 @@ int run_solver_loop(CouplingClient& client, Solver& solver, io::SnapshotWriter& 
     const auto now = Clock::now();
     state.diagnostics.wall_seconds = std::chrono::duration<double>(now - last_report).count();
     last_report = now;
-    state.diagnostics.communication_seconds =
-        client.communication_seconds() - communication_reported;
-    communication_reported = client.communication_seconds();
+    const double communication = client.communication_seconds();
+    state.diagnostics.communication_seconds = communication - communication_reported;
+    communication_reported = communication;
     state.checkpoint_written = checkpoint_written;
     checkpoint_written = 0;
     client.send_state(state);
