@@ -45,15 +45,21 @@ void ProgressLine::print(double time, std::uint64_t step, double dt, bool final)
   const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
   const double fraction = std::clamp(time / end_time_, 0.0, 1.0);
   const double done_here = time - origin_time_;
-  const double steps_per_second =
-      elapsed > 0 ? static_cast<double>(step - std::min(step, origin_step_)) / elapsed : 0.0;
-  const double eta =
-      done_here > 1e-12 ? elapsed * std::max(0.0, end_time_ - time) / done_here : 0.0;
-  std::fprintf(stream_,
-               "%st = %.4g / %.4g s  %5.1f%%  step %llu  dt %.3g s  %.0f steps/s  ETA %.0f s%s",
+  const std::uint64_t steps_here = step - std::min(step, origin_step_);
+  std::fprintf(stream_, "%st = %.4g / %.4g s  %5.1f%%  step %llu  dt %.3g s  ",
                terminal_ ? "\r" : "", time, end_time_, 100.0 * fraction,
-               static_cast<unsigned long long>(step), dt, steps_per_second, eta,
-               terminal_ ? (final ? "\n" : "   ") : "\n");
+               static_cast<unsigned long long>(step), dt);
+  // The first line comes one step after start: a rate from one step over microseconds would be
+  // noise (it printed 1.25e7 steps/s on a resumed run), so rate and ETA wait for a measurable
+  // stretch.
+  if (elapsed >= kShortestRatePeriod && steps_here >= 2 && done_here > 1e-12) {
+    const double eta = elapsed * std::max(0.0, end_time_ - time) / done_here;
+    std::fprintf(stream_, "%.0f steps/s  ETA %.0f s", static_cast<double>(steps_here) / elapsed,
+                 eta);
+  } else {
+    std::fputs("-- steps/s  ETA -- s", stream_);
+  }
+  std::fputs(terminal_ ? (final ? "\n" : "   ") : "\n", stream_);
   std::fflush(stream_);
 }
 

@@ -19,6 +19,7 @@ class ProgressLine {
  private:
   void print(double time, std::uint64_t step, double dt, bool final);
   using Clock = std::chrono::steady_clock;
+  static constexpr double kShortestRatePeriod = 0.01;  // s of wall time before a rate is shown
   double end_time_;
   bool enabled_;
   bool terminal_;

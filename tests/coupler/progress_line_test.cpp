@@ -51,5 +51,20 @@ TEST(ProgressLine, ResumedRunReportsItsOwnRateAndEta) {
   EXPECT_LT(eta, 5000.0) << text;
 }
 
+TEST(ProgressLine, FirstLineOfARunShowsNoRateYet) {
+  std::FILE* log = std::tmpfile();
+  ASSERT_NE(log, nullptr);
+  {
+    // Into a file the first update always prints (a new tenth of the run); it comes one step
+    // after the resume, microseconds after the clock started.
+    ProgressLine progress(300.0, true, log);
+    progress.update(11.1418, 441'308, 2.52e-5);
+  }
+  const std::string text = read_all(log);
+  std::fclose(log);
+  EXPECT_NE(text.find("step 441308"), std::string::npos) << text;
+  EXPECT_NE(text.find("-- steps/s  ETA -- s\n"), std::string::npos) << text;
+}
+
 }  // namespace
 }  // namespace porosph::coupler
