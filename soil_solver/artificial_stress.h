@@ -26,10 +26,29 @@ struct ArtificialStressParameters {
   double exponent = 2.55;  ///< n of f_ij^n [-]
 };
 
+/// True when no principal stress of the in-plane block is positive (negative semidefinite:
+/// every principal minor of -sigma is >= 0), so R = 0 without an eigen decomposition. Most soil
+/// particles are in compression; the eigen solver took 9 % of the soil solver's time on the
+/// dp 0.01 m rockfill run.
+template <int D>
+inline bool no_principal_tension(const Eigen::Matrix3d& sigma) {
+  static_assert(D == 2 || D == 3, "no_principal_tension: D must be 2 or 3");
+  const double a = sigma(0, 0), b = sigma(1, 1), ab = sigma(0, 1);
+  if (a > 0.0 || b > 0.0 || a * b < ab * ab) return false;
+  if constexpr (D == 2) {
+    return true;
+  } else {
+    const double c = sigma(2, 2), ac = sigma(0, 2), bc = sigma(1, 2);
+    if (c > 0.0 || a * c < ac * ac || b * c < bc * bc) return false;
+    return sigma.determinant() <= 0.0;  // det(-sigma) >= 0
+  }
+}
+
 /// R_i of one particle with stress sigma (tension positive) and density rho.
 template <int D>
 inline Eigen::Matrix3d artificial_stress(const Eigen::Matrix3d& sigma, double rho, double epsilon) {
   static_assert(D == 2 || D == 3, "artificial_stress: D must be 2 or 3");
+  if (no_principal_tension<D>(sigma)) return Eigen::Matrix3d::Zero();
   Eigen::SelfAdjointEigenSolver<MatD<D>> eig;
   eig.computeDirect(sigma.template topLeftCorner<D, D>());
   sph::Vec<D> r = sph::Vec<D>::Zero();

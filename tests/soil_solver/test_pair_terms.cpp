@@ -2,7 +2,10 @@
 // sign), stress divergence of eq. 5 / 16.
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <cmath>
+#include <random>
 
 #include "soil_solver/artificial_stress.h"
 #include "soil_solver/soil_artificial_viscosity.h"
@@ -31,6 +34,37 @@ TEST(ArtificialStress, ZeroInCompression) {
   const Matrix3d sigma = rotated_principal(-100e3, -30e3, -60e3, 0.4);
   EXPECT_EQ(artificial_stress<2>(sigma, 1800.0, 0.5), Matrix3d::Zero());
   EXPECT_EQ(artificial_stress<3>(sigma, 1800.0, 0.5), Matrix3d::Zero());
+}
+
+TEST(ArtificialStress, CompressionTestAgreesWithTheEigenvalues) {
+  // The shortcut (no eigen decomposition when every principal minor of -sigma is >= 0) must
+  // say "no tension" exactly when the largest eigenvalue is <= 0. Random stresses built from
+  // chosen eigenvalues (one of them in [-1, 0.1] x 100 kPa, so about one in eleven is tensile)
+  // and a random 3D rotation; cases within 1e-9 of the boundary are skipped (rounding decides).
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> compressive(-100e3, -1e3), last(-100e3, 10e3);
+  std::normal_distribution<double> normal;
+  int tensile_seen = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const Eigen::Quaterniond q =
+        Eigen::Quaterniond(normal(rng), normal(rng), normal(rng), normal(rng)).normalized();
+    const Eigen::Vector3d lambda(compressive(rng), compressive(rng), last(rng));
+    const Matrix3d sigma =
+        q.toRotationMatrix() * lambda.asDiagonal() * q.toRotationMatrix().transpose();
+    const Eigen::Matrix2d block = sigma.topLeftCorner<2, 2>();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen_2d;
+    eigen_2d.computeDirect(block);
+    const double max_2d = eigen_2d.eigenvalues()[1];
+    const double max_3d = lambda.maxCoeff();
+    if (std::abs(max_2d) > 1e-9 * 100e3) {
+      EXPECT_EQ(no_principal_tension<2>(sigma), max_2d <= 0.0);
+    }
+    if (std::abs(max_3d) > 1e-9 * 100e3) {
+      EXPECT_EQ(no_principal_tension<3>(sigma), max_3d <= 0.0);
+    }
+    tensile_seen += max_3d > 0.0;
+  }
+  EXPECT_GT(tensile_seen, 50);  // both branches exercised
 }
 
 TEST(ArtificialStress, TensilePrincipalStressOnly) {
