@@ -146,12 +146,8 @@ template <int D>
 void SoilSolver<D>::reorder_by_cell() {
   neighbours_.invalidate();  // a search now: the current cell order, whatever the last search
   build_neighbours();
-  const std::size_t n_free = particles_.n_free;
-  order_scratch_.clear();
-  for (std::int32_t i : neighbours_.cell_order())
-    if (static_cast<std::size_t>(i) < n_free) order_scratch_.push_back(i);
-  for (std::size_t i = n_free; i < particles_.size(); ++i)  // fixed particles never move
-    order_scratch_.push_back(static_cast<std::int32_t>(i));
+  // Fixed particles keep their stored order (they never move).
+  neighbours_.cell_sorted_permutation(/*sort_fixed=*/false, order_scratch_);
   particles_.permute(order_scratch_);
   neighbours_.invalidate();
   build_neighbours();

@@ -47,6 +47,21 @@ void NeighbourList<D>::build(const Vec<D>* x, std::size_t n, std::size_t n_free,
 }
 
 template <int D>
+void NeighbourList<D>::cell_sorted_permutation(bool sort_fixed,
+                                               std::vector<std::int32_t>& out) const {
+  const auto is_free = [this](std::int32_t i) { return static_cast<std::size_t>(i) < n_free_; };
+  out.clear();
+  for (std::int32_t i : sorted_index_)
+    if (is_free(i)) out.push_back(i);
+  if (sort_fixed) {
+    for (std::int32_t i : sorted_index_)
+      if (!is_free(i)) out.push_back(i);
+  } else {
+    for (std::size_t i = n_free_; i < n_; ++i) out.push_back(static_cast<std::int32_t>(i));
+  }
+}
+
+template <int D>
 bool NeighbourList<D>::needs_search(const Vec<D>* x, std::size_t n, std::size_t n_free,
                                     double support, const DomainBox<D>& box) const {
   if (!searched_ || n != n_ || std::min(n_free, n) != n_free_ || support != support_) return true;

@@ -90,6 +90,11 @@ class NeighbourList {
   /// Every particle index ordered by cell (axis 0 fastest), free before fixed within a cell, as
   /// of the last cell search (invalidate() then build() for a current one).
   const std::vector<std::int32_t>& cell_order() const { return sorted_index_; }
+  /// The permutation that stores the particles in the order of the last cell search, for memory
+  /// locality: the free particles in cell order, then the fixed ones - in cell order as well when
+  /// sort_fixed (walls never move: sorting them once is enough), else in their current order, so
+  /// that what was stored about them by index stays valid. Reuses out's storage.
+  void cell_sorted_permutation(bool sort_fixed, std::vector<std::int32_t>& out) const;
 
  private:
   void setup_grid(const Vec<D>* x);

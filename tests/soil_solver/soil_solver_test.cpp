@@ -224,9 +224,12 @@ TEST(SoilSolver, SnapshotFieldsHaveThePinnedNamesAndShapes) {
   for (const auto& f : solver.snapshot_fields()) {
     names.insert(f.name);
     EXPECT_EQ(f.rows, solver.particle_count()) << f.name;
-    if (f.name == "stress") EXPECT_EQ(f.cols, 9u);
-    if (f.name == "position" || f.name == "velocity" || f.name == "displacement")
+    if (f.name == "stress") {
+      EXPECT_EQ(f.cols, 9u);
+    }
+    if (f.name == "position" || f.name == "velocity" || f.name == "displacement") {
       EXPECT_EQ(f.cols, 2u);
+    }
   }
   EXPECT_EQ(names, (std::set<std::string>{"position", "velocity", "density", "stress", "porosity",
                                           "plastic_strain", "displacement", "saturation", "id",

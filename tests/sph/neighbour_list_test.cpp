@@ -207,5 +207,29 @@ TEST(SphNeighbourList, SkinReusesTheSearchAndMatchesAFreshOnePeriodic3D) {
   expect_skin_reuse_matches_fresh_search(box, 600);
 }
 
+TEST(SphNeighbourList, CellSortedPermutationPutsFreeParticlesFirst) {
+  DomainBox<2> box;
+  box.min = Vec<2>(0.0, 0.0);
+  box.max = Vec<2>(1.0, 0.5);
+  const auto x = random_points<2>(400, box, 5);
+  const std::size_t n_free = 300;
+  NeighbourList<2> list;
+  list.build(x.data(), x.size(), n_free, 0.1, box);
+  std::vector<std::int32_t> free_in_cells, fixed_in_cells;
+  for (std::int32_t i : list.cell_order())
+    (static_cast<std::size_t>(i) < n_free ? free_in_cells : fixed_in_cells).push_back(i);
+  std::vector<std::int32_t> order{42};  // stale content is replaced
+  list.cell_sorted_permutation(true, order);
+  ASSERT_EQ(order.size(), x.size());
+  EXPECT_TRUE(std::equal(free_in_cells.begin(), free_in_cells.end(), order.begin()));
+  EXPECT_TRUE(std::equal(fixed_in_cells.begin(), fixed_in_cells.end(), order.begin() + n_free));
+  list.cell_sorted_permutation(false, order);
+  ASSERT_EQ(order.size(), x.size());
+  EXPECT_TRUE(std::equal(free_in_cells.begin(), free_in_cells.end(), order.begin()));
+  for (std::size_t i = n_free; i < x.size(); ++i) EXPECT_EQ(order[i], static_cast<std::int32_t>(i));
+  // The cell order differs from the index order (random points), so the test can tell them apart.
+  EXPECT_FALSE(std::is_sorted(fixed_in_cells.begin(), fixed_in_cells.end()));
+}
+
 }  // namespace
 }  // namespace porosph::sph
