@@ -38,12 +38,13 @@ struct SoilArtificialViscosity {
     return (-alpha * c_mean * mu + beta * mu * mu) / rho_mean;
   }
 
-  /// Acceleration of i due to j: -m_j Pi_ij grad_i W_ij.
+  /// Acceleration of i due to j: -m_j Pi_ij grad_i W_ij; r_ij = |x_ij| (the pair's stored
+  /// distance: no square root per pair).
   template <int D>
-  sph::Vec<D> acceleration(double m_j, const sph::Vec<D>& v_ij, const sph::Vec<D>& x_ij, double c_i,
-                           double c_j, double rho_i, double rho_j,
+  sph::Vec<D> acceleration(double m_j, const sph::Vec<D>& v_ij, const sph::Vec<D>& x_ij,
+                           double r_ij, double c_i, double c_j, double rho_i, double rho_j,
                            const sph::Vec<D>& grad_w_ij) const {
-    const double p = pi(v_ij.dot(x_ij), x_ij.norm(), 0.5 * (c_i + c_j), 0.5 * (rho_i + rho_j));
+    const double p = pi(v_ij.dot(x_ij), r_ij, 0.5 * (c_i + c_j), 0.5 * (rho_i + rho_j));
     return (-m_j * p) * grad_w_ij;
   }
 };

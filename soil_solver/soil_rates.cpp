@@ -45,8 +45,8 @@ SoilRateSummary acceleration_loop(const sph::NeighbourList<D>& nl, const Kernel&
         }
       }
       if constexpr (kViscosity) {
-        acc += av.acceleration<D>(P.mass[j], Vec(v_i - v_j), pair.x_ab, c, c, rho_i, P.density[j],
-                                  grad_w);
+        acc += av.acceleration<D>(P.mass[j], Vec(v_i - v_j), pair.x_ab, pair.r, c, c, rho_i,
+                                  P.density[j], grad_w);
       }
     };
     for (auto it = nl.begin(i); it != nl.mid(i); ++it) pair_terms(*it, P.velocity[it->b]);

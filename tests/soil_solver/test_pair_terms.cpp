@@ -119,7 +119,7 @@ TEST(SoilArtificialViscosity, DissipatesApproachingPairsOnly) {
   const V2 x_ij(dp, 0.0);
   const V2 grad = kernel.gradient(x_ij, dp);
   const V2 approaching(-0.2, 0.05);  // v_i - v_j with v_ij . x_ij < 0
-  const V2 a_i = av.acceleration<2>(m, approaching, x_ij, c, c, rho, rho, grad);
+  const V2 a_i = av.acceleration<2>(m, approaching, x_ij, x_ij.norm(), c, c, rho, rho, grad);
   // mu = h v.x / (r^2 + 0.01 h^2) = 1.2e-3 * (-2e-4) / (1e-6 + 1.44e-8) = -2.3659e-4... m/s ->
   // Pi = (0.1 * 60 * 2.3659e-1 + 0.1 * mu^2) / 1800, with mu = -0.236593 m/s.
   const double mu = h * (-0.2 * dp) / (dp * dp + 0.01 * h * h);
@@ -129,7 +129,8 @@ TEST(SoilArtificialViscosity, DissipatesApproachingPairsOnly) {
   EXPECT_LT(a_i.dot(approaching), 0.0);  // decelerates the relative motion
   EXPECT_GT(a_i.dot(x_ij), 0.0);         // a repulsion
   // Receding: exactly zero.
-  EXPECT_EQ(av.acceleration<2>(m, V2(-approaching), x_ij, c, c, rho, rho, grad), V2::Zero());
+  EXPECT_EQ(av.acceleration<2>(m, V2(-approaching), x_ij, x_ij.norm(), c, c, rho, rho, grad),
+            V2::Zero());
   // Sound speed: sqrt(K / (rho_sat - rho_w)) of CASES.md, K = 4.1667 MPa, 1810 - 1000 = 810.
   EXPECT_NEAR(soil_sound_speed(5e6 / 1.2, 810.0), std::sqrt(5e6 / 1.2 / 810.0), 1e-12);
   EXPECT_NEAR(soil_sound_speed(5e6 / 1.2, 810.0), 71.7219, 1e-4);
