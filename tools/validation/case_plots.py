@@ -237,12 +237,14 @@ def heave_grid(fits, figures):
 
 
 def rockfill_b_against_q(rows, figures):
-    """rows: (discharge per metre [m^2/s], Q [l/s], W [m], B [m]) of the rockfill runs."""
+    """rows: (discharge per metre [m^2/s], Q [l/s], W [m], B [m], dp [m]) of the rockfill runs."""
     fig, ax = plt.subplots(figsize=(5, 3.5))
-    for flow, marker in zip(ROCKFILL_B_EXPERIMENT, ("o", "s")):
-        pts = sorted((1e3 * q, b) for (q, qq, w, b) in rows if abs(qq - flow) < 0.01)
-        if pts:
-            ax.plot(*zip(*pts), marker, label=f"PoroSPH, Q = {flow} l/s (W varied)")
+    for dp in sorted({r[4] for r in rows}, reverse=True):
+        for flow, marker in zip(ROCKFILL_B_EXPERIMENT, ("o", "s") if dp >= 0.02 else ("*", "D")):
+            pts = sorted((1e3 * q, b) for (q, qq, w, b, d) in rows
+                         if abs(qq - flow) < 0.01 and d == dp)
+            if pts:
+                ax.plot(*zip(*pts), marker, label=f"PoroSPH, Q = {flow} l/s, dp {dp:g} m")
     for flow, b_exp in ROCKFILL_B_EXPERIMENT.items():
         ax.axhline(b_exp, color="k", ls="--", lw=0.8)
         ax.text(1, b_exp + 0.01, f"experiment, Q = {flow} l/s", fontsize=7)

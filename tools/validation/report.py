@@ -93,6 +93,17 @@ CASES = [
     for (tag, w) in [("w125", 1.25), ("w100", 1.0), ("w090", 0.9), ("w080", 0.8)]
     for (q, Q) in [(19, 19.36), (30, 30.45)]
 ] + [
+    case(f"rockfill_q{q}_w100_dp01", f"Rockfill core overtopping, Q = {Q} l/s, W = 1.0 m, at the "
+         "CASES.md spacing dp = 0.01 m", "cases/rockfill_overtopping/scene.toml",
+         "rockfill_overtopping",
+         overrides=["run.dp=0.01", "run.end_time=300.2", "run.checkpoint_wall_minutes=10",
+                    f"water.inflow[0].flow_rate={Q / 1000:.5f}",
+                    "water.inflow[0].cross_section=0.04"],
+         plot=case_plots.rockfill, run_dir=f"../long/rockfill_q{q}_w100_dp01",
+         notes="dp 0.01 m (the CASES.md spacing, 4 times the particles of dp 0.02 m), W = 1.0 m: "
+               "the resolution check of the W = 1.0 m pair (docs/validation-studies.md).")
+    for (q, Q) in [(19, 19.36), (30, 30.45)]
+] + [
     case("hydraulic_heave", "Hydraulic heave next to a sheet pile (paper 4.3), phi 29 / 40",
          "cases/hydraulic_heave/scene.toml", "hydraulic_heave", overrides=["run.dp=0.005"],
          plot=case_plots.hydraulic_heave,
@@ -231,22 +242,22 @@ def rockfill_width_section(args, b_values):
         inflow = run["parameters"]["water"]["inflow"][0]
         width = inflow["cross_section"] / (inflow["max"][1] - inflow["min"][1])
         rows.append((inflow["flow_rate"] / width, 1e3 * inflow["flow_rate"], width, b,
-                     run["simulated_time"], name))
+                     run["simulated_time"], name, run["parameters"]["run"]["dp"]))
     if not rows:
         return ""
     rows.sort()
     text = ["## Rockfill: B against the discharge per metre (the flume width)", "",
             "The paper gives Q, not the flume width W; the 2D model needs q = Q / W. Each row is "
-            "one run of cases/rockfill_overtopping/scene.toml (dp 0.02 m) with "
+            "one run of cases/rockfill_overtopping/scene.toml with "
             "`--set 'water.inflow[0].cross_section=0.04 W'` (the scene assumes W = 2.5 m).", "",
-            "| case | Q [l/s] | W [m] | q [l/s/m] | B (wet, moved > D15) | experiment at this Q "
-            "| run to |", "| --- | --- | --- | --- | --- | --- | --- |"]
-    for (q, flow, width, b, t, name) in rows:
+            "| case | dp [m] | Q [l/s] | W [m] | q [l/s/m] | B (wet, moved > D15) "
+            "| experiment at this Q | run to |", "| --- | --- | --- | --- | --- | --- | --- | --- |"]
+    for (q, flow, width, b, t, name, dp) in rows:
         b_exp = case_plots.ROCKFILL_B_EXPERIMENT.get(round(flow, 2))
         exp = f"{b_exp} m" if b_exp is not None else "-"
-        text.append(f"| {name} | {flow:.2f} | {width:.2f} | {1e3 * q:.1f} | {b:.3f} m | {exp} | "
-                    f"{t:.1f} s |")
-    figure = case_plots.rockfill_b_against_q([r[:4] for r in rows], args.figures)
+        text.append(f"| {name} | {dp:g} | {flow:.2f} | {width:.2f} | {1e3 * q:.1f} | {b:.3f} m "
+                    f"| {exp} | {t:.1f} s |")
+    figure = case_plots.rockfill_b_against_q([r[:4] + (r[6],) for r in rows], args.figures)
     text += ["", f"![B against q]({os.path.relpath(figure, args.docs)})"]
     return "\n".join(text) + "\n"
 
