@@ -24,6 +24,7 @@ import sys
 import tempfile
 
 import case_plots
+from previous_report import previous_report, previous_width_rows
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
@@ -90,7 +91,8 @@ CASES = [
          notes=f"dp 0.02 m; flume width W = {w} m instead of the scene's assumed 2.5 m, so "
                f"q = Q / W is {2.5 / w:g} times the scene's (docs/validation-studies.md, "
                "\"Rockfill to steady state\").")
-    for (tag, w) in [("w125", 1.25), ("w100", 1.0), ("w090", 0.9), ("w080", 0.8)]
+    for (tag, w) in [("w125", 1.25), ("w100", 1.0), ("w094", 0.94), ("w090", 0.9),
+                     ("w080", 0.8)]
     for (q, Q) in [(19, 19.36), (30, 30.45)]
 ] + [
     case(f"rockfill_q{q}_w100_dp01", f"Rockfill core overtopping, Q = {Q} l/s, W = 1.0 m, at the "
@@ -229,10 +231,11 @@ def heave_grid_section(args):
     return "\n".join(text) + "\n"
 
 
-def rockfill_width_section(args, b_values):
+def rockfill_width_section(args, b_values, previous_block=""):
     """B against the discharge per metre over the rockfill runs (the flume width W is not known:
-    each run's q = Q / W). b_values: case name -> the B its check reported."""
-    rows = []
+    each run's q = Q / W). b_values: case name -> the B its check reported; previous_block: the
+    earlier report's section, whose rows stand for the cases not measured this time."""
+    rows = [r for r in previous_width_rows(previous_block) if r[5] not in b_values]
     for c in CASES:
         if c["name"] not in b_values:
             continue
@@ -260,30 +263,6 @@ def rockfill_width_section(args, b_values):
     figure = case_plots.rockfill_b_against_q([r[:4] + (r[6],) for r in rows], args.figures)
     text += ["", f"![B against q]({os.path.relpath(figure, args.docs)})"]
     return "\n".join(text) + "\n"
-
-
-def previous_report(path):
-    """The rows and sections of an existing report by case name (and its sections over several
-    cases: "heave", the Fig. 8 grid; "rockfill", B against q), so that --only can rewrite some
-    cases and keep the others as they were measured."""
-    rows, sections, multi_case = {}, {}, {}
-    if not os.path.exists(path):
-        return rows, sections, multi_case
-    with open(path) as f:
-        text = f.read()
-    for line in text.splitlines():
-        cells = line.split(" | ")
-        if line.startswith("| ") and len(cells) > 2 and not line.startswith(("| case", "| ---")):
-            rows.setdefault(cells[0][2:].strip(), []).append(line)
-    for block in re.split(r"\n(?=## )", text)[1:]:
-        title = block.splitlines()[0]
-        if title.startswith("## Failure time against"):
-            multi_case["heave"] = block.rstrip("\n") + "\n"
-        elif title.startswith("## Rockfill: B against"):
-            multi_case["rockfill"] = block.rstrip("\n") + "\n"
-        else:
-            sections[title[3:].split(":")[0]] = block.rstrip("\n") + "\n"
-    return rows, sections, multi_case
 
 
 def main():
@@ -374,9 +353,9 @@ def main():
                                                                           "heave_eq10"])
     grid = kept_multi.get("heave", "") if keep else heave_grid_section(args)
     keep = args.only is not None and not set(args.only) & rockfill_cases
-    # Rewritten from the rockfill cases of this invocation (with --only, name them all).
+    # The rockfill cases measured now, and the earlier report's rows for the others.
     grid += "\n" + (kept_multi.get("rockfill", "") if keep else
-                    rockfill_width_section(args, rockfill_b))
+                    rockfill_width_section(args, rockfill_b, kept_multi.get("rockfill", "")))
     with open(args.out, "w") as f:
         f.write("\n".join(header + table) + "\n\n" + grid + "\n"
                 + "\n".join(sections))
