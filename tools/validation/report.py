@@ -17,7 +17,6 @@ of each check is in tools/validation/*.h and docs/validation-studies.md.
 import argparse
 import json
 import os
-import re
 import shutil
 import subprocess
 import sys
