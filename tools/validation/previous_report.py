@@ -4,6 +4,11 @@ live outside the repository)."""
 import os
 import re
 
+# The columns of the B-against-q table: report.py writes them, previous_width_rows reads them.
+CASE, DP, FLOW, WIDTH, B, RUN_TO = ("case", "dp [m]", "Q [l/s]", "W [m]", "B (wet, moved > D15)",
+                                    "run to")
+WIDTH_COLUMNS = [CASE, DP, FLOW, WIDTH, "q [l/s/m]", B, "experiment at this Q", RUN_TO]
+
 
 def previous_report(path):
     """The rows and sections of an existing report by case name (and its sections over several
@@ -14,12 +19,12 @@ def previous_report(path):
         return rows, sections, multi_case
     with open(path) as f:
         text = f.read()
-    summary_table = text.split("\n## ")[0]  # the per-case rows; later tables are per section
-    for line in summary_table.splitlines():
+    blocks = re.split(r"\n(?=## )", text)  # the summary table, then one block per section
+    for line in blocks[0].splitlines():
         cells = line.split(" | ")
         if line.startswith("| ") and len(cells) > 2 and not line.startswith(("| case", "| ---")):
             rows.setdefault(cells[0][2:].strip(), []).append(line)
-    for block in re.split(r"\n(?=## )", text)[1:]:
+    for block in blocks[1:]:
         title = block.splitlines()[0]
         if title.startswith("## Failure time against"):
             multi_case["heave"] = block.rstrip("\n") + "\n"
@@ -39,18 +44,17 @@ def previous_width_rows(block):
     stated_dp = re.search(r"\(dp ([0-9.]+) m\)", block or "")
     for line in (block or "").splitlines():
         cells = [x.strip() for x in line.strip().strip("|").split("|")]
-        if line.startswith("| case"):
+        if cells[0] == CASE:
             header = cells
         elif header and line.startswith("| ") and not line.startswith("| ---"):
             col = dict(zip(header, cells))
-            if "dp [m]" in col:
-                dp = float(col["dp [m]"])
+            if DP in col:
+                dp = float(col[DP])
             elif stated_dp:
                 dp = float(stated_dp.group(1))
             else:
                 raise ValueError(f"B-against-q row without a spacing: {line}")
-            flow, width = float(col["Q [l/s]"]), float(col["W [m]"])
-            rows.append((1e-3 * flow / width, flow, width,
-                         float(col["B (wet, moved > D15)"].split()[0]),
-                         float(col["run to"].split()[0]), col["case"], dp))
+            flow, width = float(col[FLOW]), float(col[WIDTH])
+            rows.append((1e-3 * flow / width, flow, width, float(col[B].split()[0]),
+                         float(col[RUN_TO].split()[0]), col[CASE], dp))
     return rows

@@ -23,7 +23,7 @@ import sys
 import tempfile
 
 import case_plots
-from previous_report import previous_report, previous_width_rows
+from previous_report import WIDTH_COLUMNS, previous_report, previous_width_rows
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
@@ -252,8 +252,7 @@ def rockfill_width_section(args, b_values, previous_block=""):
             "The paper gives Q, not the flume width W; the 2D model needs q = Q / W. Each row is "
             "one run of cases/rockfill_overtopping/scene.toml with "
             "`--set 'water.inflow[0].cross_section=0.04 W'` (the scene assumes W = 2.5 m).", "",
-            "| case | dp [m] | Q [l/s] | W [m] | q [l/s/m] | B (wet, moved > D15) "
-            "| experiment at this Q | run to |", "| --- | --- | --- | --- | --- | --- | --- | --- |"]
+            "| " + " | ".join(WIDTH_COLUMNS) + " |", "|" + " --- |" * len(WIDTH_COLUMNS)]
     for (q, flow, width, b, t, name, dp) in rows:
         b_exp = case_plots.ROCKFILL_B_EXPERIMENT.get(round(flow, 2))
         exp = f"{b_exp} m" if b_exp is not None else "-"
