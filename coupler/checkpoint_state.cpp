@@ -154,37 +154,40 @@ void restore_interaction(const json& j, InteractionRecord& r) {
 std::string coupler_state_json(const RunRecord& r, const LoopState& loop) {
   json phases = json::object();
   for (const auto& [name, phase] : r.phases) phases[name] = phase_state(phase);
-  const json out = {{"version", kStateVersion},
-                    {"loop",
-                     {{"output_index", loop.output_index},
-                      {"next_output_time", exact(loop.next_output_time)},
-                      {"last_output_time", exact(loop.last_output_time)},
-                      {"outputs_pending", loop.outputs_pending},
-                      {"controller_dt", exact(loop.controller_dt)}}},
-                    {"record",
-                     {{"scene_name", r.scene_name},
-                      {"scene_path", r.scene_path},
-                      {"resolved_toml", r.resolved_toml},
-                      {"dimension", r.dimension},
-                      {"steps", r.steps},
-                      {"time", exact(r.time)},
-                      {"end_time", exact(r.end_time)},
-                      {"wall_seconds", exact(r.wall_seconds)},
-                      {"coupler_seconds", exact(r.coupler_seconds)},
-                      {"dt_min", exact(r.dt_min)},
-                      {"dt_max", exact(r.dt_max)},
-                      {"dt_sum", exact(r.dt_sum)},
-                      {"dt_over_limit_max", exact(r.dt_over_limit_max)},
-                      {"phases", phases},
-                      {"ledger",
-                       {{"impulse_to_water", exact_vector(r.ledger.impulse_to_water)},
-                        {"impulse_to_soil", exact_vector(r.ledger.impulse_to_soil)},
-                        {"impulse_magnitude_sum", exact(r.ledger.impulse_magnitude_sum)}}},
-                      {"interaction", interaction_state(r.interaction)},
-                      {"observables", exact_map(r.observables)},
-                      {"resumes", r.resumes},
-                      {"transport_bytes_received", r.transport_bytes_received},
-                      {"transport_bytes_sent", r.transport_bytes_sent}}}};
+  const json out = {
+      {"version", kStateVersion},
+      {"loop",
+       {{"output_index", loop.output_index},
+        {"next_output_time", exact(loop.next_output_time)},
+        {"last_output_time", exact(loop.last_output_time)},
+        {"outputs_pending", loop.outputs_pending},
+        {"controller_dt", exact(loop.controller_dt)}}},
+      {"record",
+       {{"scene_name", r.scene_name},
+        {"scene_path", r.scene_path},
+        {"resolved_toml", r.resolved_toml},
+        {"dimension", r.dimension},
+        {"steps", r.steps},
+        {"time", exact(r.time)},
+        {"end_time", exact(r.end_time)},
+        {"wall_seconds", exact(r.wall_seconds)},
+        {"coupler_seconds", exact(r.coupler_seconds)},
+        {"dt_min", exact(r.dt_min)},
+        {"dt_max", exact(r.dt_max)},
+        {"dt_sum", exact(r.dt_sum)},
+        {"dt_over_limit_max", exact(r.dt_over_limit_max)},
+        {"phases", phases},
+        {"ledger",
+         {{"impulse_to_water", exact_vector(r.ledger.impulse_to_water)},
+          {"impulse_to_soil", exact_vector(r.ledger.impulse_to_soil)},
+          {"impulse_magnitude_sum", exact(r.ledger.impulse_magnitude_sum)},
+          {"explicit_impulse_to_water", exact_vector(r.ledger.explicit_impulse_to_water)},
+          {"explicit_impulse_to_soil", exact_vector(r.ledger.explicit_impulse_to_soil)}}},
+        {"interaction", interaction_state(r.interaction)},
+        {"observables", exact_map(r.observables)},
+        {"resumes", r.resumes},
+        {"transport_bytes_received", r.transport_bytes_received},
+        {"transport_bytes_sent", r.transport_bytes_sent}}}};
   return out.dump(1) + "\n";
 }
 
@@ -220,6 +223,8 @@ void restore_coupler_state(const std::string& text, const std::string& source, R
     r.ledger.impulse_to_water = exact_vector_of(ledger.at("impulse_to_water"));
     r.ledger.impulse_to_soil = exact_vector_of(ledger.at("impulse_to_soil"));
     r.ledger.impulse_magnitude_sum = exact_of(ledger.at("impulse_magnitude_sum"));
+    r.ledger.explicit_impulse_to_water = exact_vector_of(ledger.at("explicit_impulse_to_water"));
+    r.ledger.explicit_impulse_to_soil = exact_vector_of(ledger.at("explicit_impulse_to_soil"));
     restore_interaction(j.at("interaction"), r.interaction);
     r.observables = exact_map_of(j.at("observables"));
     if (j.contains("transport_bytes_received")) {  // absent in checkpoints before 2026-12-02

@@ -217,15 +217,8 @@ void CoupledStepLoop::send_commands(double dt, bool write_output, std::uint32_t 
     command.other_region_max.clear();
     if (interaction_) {
       const bool soil = phase == "soil";
-      // Implicit only where the explicit drag nears its stability limit (lambda dt >=
-      // coupling.implicit_drag_from); elsewhere explicit, which conserves momentum pair by pair.
-      const std::vector<double>& rate =
-          soil ? interaction_->soil_rate() : interaction_->water_rate();
-      command.interaction_rate.resize(rate.size());
-      for (std::size_t i = 0; i < rate.size(); ++i) {
-        command.interaction_rate[i] =
-            rate[i] * dt >= scene_.coupling.implicit_drag_from ? rate[i] : 0.0;
-      }
+      // The accelerations already hold the implicit drag over dt (finish_step): the solvers add
+      // them explicitly, no rate is sent.
       interaction_->hand_over(soil, command.interaction_acceleration, command.saturation);
       overlap_region_for(states_.at(soil ? "water" : "soil"), scene_, command.other_region_min,
                          command.other_region_max);
@@ -304,8 +297,10 @@ void CoupledStepLoop::run(ProgressLine& progress) {
       loop_.last_output_time = record_.time;
     }
     if (interaction_ && interaction_summary_.forces) {
+      interaction_->finish_step(states_.at("water"), states_.at("soil"), dt);
       const InteractionOutputs& o = interaction_->outputs();
       record_.ledger.add_step(dt, o.force_on_water, o.force_on_soil, o.force_magnitude_sum);
+      record_.ledger.add_explicit_share(dt, o.explicit_force_on_water, o.explicit_force_on_soil);
     }
     const bool final_step = record_.time + dt >= end_time - end_tolerance ||
                             (max_steps > 0 && record_.steps + 1 >= max_steps);

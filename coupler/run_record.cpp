@@ -127,6 +127,14 @@ void InteractionRecord::add_step(bool evaluated, std::uint64_t pairs, std::uint6
   ++evaluations;
 }
 
+void ConservationLedger::add_explicit_share(double dt, const std::vector<double>& force_on_water,
+                                            const std::vector<double>& force_on_soil) {
+  for (std::size_t k = 0; k < explicit_impulse_to_water.size() && k < force_on_water.size(); ++k)
+    explicit_impulse_to_water[k] += dt * force_on_water[k];
+  for (std::size_t k = 0; k < explicit_impulse_to_soil.size() && k < force_on_soil.size(); ++k)
+    explicit_impulse_to_soil[k] += dt * force_on_soil[k];
+}
+
 double ConservationLedger::relative_imbalance() const {
   std::vector<double> total(impulse_to_water.size());
   for (std::size_t k = 0; k < total.size(); ++k)
@@ -186,6 +194,19 @@ void write_run_json(const std::string& path, const RunRecord& r) {
                    {"impulse_to_soil", vector_json(r.ledger.impulse_to_soil)},
                    {"impulse_magnitude_sum", number(r.ledger.impulse_magnitude_sum)},
                    {"relative_imbalance", number(r.ledger.relative_imbalance())}};
+  {
+    std::vector<double> implicit_water = r.ledger.impulse_to_water;
+    std::vector<double> implicit_soil = r.ledger.impulse_to_soil;
+    for (std::size_t k = 0; k < implicit_water.size(); ++k) {
+      implicit_water[k] -= r.ledger.explicit_impulse_to_water[k];
+      implicit_soil[k] -= r.ledger.explicit_impulse_to_soil[k];
+    }
+    out["ledger"]["explicit_share"] = {
+        {"impulse_to_water", vector_json(r.ledger.explicit_impulse_to_water)},
+        {"impulse_to_soil", vector_json(r.ledger.explicit_impulse_to_soil)}};
+    out["ledger"]["implicit_share"] = {{"impulse_to_water", vector_json(implicit_water)},
+                                       {"impulse_to_soil", vector_json(implicit_soil)}};
+  }
   if (r.interaction.active) out["interaction"] = interaction_json(r.interaction);
   out["transport"] = {
       {"bytes_received", r.transport_bytes_received},
@@ -216,7 +237,10 @@ void write_run_json(const std::string& path, const RunRecord& r) {
 std::vector<io::XdmfField> snapshot_fields_of_phase(const std::string& phase, int dimension) {
   const std::size_t d = static_cast<std::size_t>(dimension);
   std::vector<io::XdmfField> fields = {{"velocity", d, "Float"}, {"density", 1, "Float"}};
-  if (phase == "water") fields.push_back({"pressure", 1, "Float"});
+  if (phase == "water") {  // fluid_solver/fluid_solver_output.cpp
+    fields.push_back({"pressure", 1, "Float"});
+    fields.push_back({"mass", 1, "Float"});
+  }
   if (phase == "soil") {  // soil_solver/soil_output.h
     fields.push_back({"stress", 9, "Float"});
     fields.push_back({"porosity", 1, "Float"});

@@ -21,13 +21,22 @@ struct ConservationLedger {
   /// sum over steps of dt * (sum_i |m_i^s a_i| + sum_a |m_a a_a|): the scale of the round-off
   /// against which the imbalance is measured.
   double impulse_magnitude_sum = 0;
+  /// The explicit share: dt * the explicit drag at the states' velocities (the paper's scheme);
+  /// impulse_to_* minus these is the implicit share (soil_water_interaction.h).
+  std::vector<double> explicit_impulse_to_water, explicit_impulse_to_soil;
 
   explicit ConservationLedger(int dimension = 2)
-      : impulse_to_water(dimension, 0.0), impulse_to_soil(dimension, 0.0) {}
+      : impulse_to_water(dimension, 0.0),
+        impulse_to_soil(dimension, 0.0),
+        explicit_impulse_to_water(dimension, 0.0),
+        explicit_impulse_to_soil(dimension, 0.0) {}
   /// Books one step of length dt with the interaction forces sum_a m_a a_a (`force_on_water`),
   /// sum_i m_i^s a_i (`force_on_soil`) and the sum of the per-particle force magnitudes.
   void add_step(double dt, const std::vector<double>& force_on_water,
                 const std::vector<double>& force_on_soil, double force_magnitude_sum);
+  /// Books the explicit share of one step (forces as in add_step).
+  void add_explicit_share(double dt, const std::vector<double>& force_on_water,
+                          const std::vector<double>& force_on_soil);
   /// |sum of both impulses| / impulse_magnitude_sum; 0 when nothing was exchanged.
   double relative_imbalance() const;
 };

@@ -29,6 +29,7 @@ void FluidSolver<D>::write_checkpoint(io::CheckpointWriter& out) {
   out.set("next_wall_removal", next_wall_removal_);
   out.set("damping_released", static_cast<std::int64_t>(damping_.released()));
   out.set("physics_seconds", physics_seconds_);
+  out.set("dt_previous", dt_previous_);
 }
 
 template <int D>
@@ -52,6 +53,7 @@ void FluidSolver<D>::restore_checkpoint(const io::CheckpointReader& in) {
   interaction_nonzero_ = in.get_i64("interaction_nonzero") != 0;
   interaction_fresh_ = false;  // a checkpoint is taken after advance()
   next_wall_removal_ = in.get_f64("next_wall_removal");
+  dt_previous_ = in.get_f64("dt_previous");
   damping_.set_released(in.get_i64("damping_released") != 0);
   physics_seconds_ = in.get_f64("physics_seconds");
 }

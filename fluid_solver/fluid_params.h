@@ -26,6 +26,7 @@ struct FluidParams {
   bool no_slip = true;             ///< walls: mirrored velocity in viscous terms; false: excluded
   int density_filter_every = 0;    ///< Shepard filter period in steps (0: off)
   double density_diffusion = 0.0;  ///< delta of the density diffusion term (0: off)
+  double particle_shifting = 0.0;  ///< A of the particle shifting (particle_shifting.h; 0: off)
   int euler_every = 40;            ///< modified Verlet: Euler step period
   double cfl = 0.2, c_a = 0.25, viscous_coefficient = 0.125;
   bool hydrostatic_initial = true;
@@ -33,6 +34,7 @@ struct FluidParams {
   bool morris_on() const { return mu > 0.0; }
   bool artificial_on() const { return artificial.alpha > 0.0 || artificial.beta > 0.0; }
   bool diffusion_on() const { return density_diffusion > 0.0; }
+  bool shifting_on() const { return particle_shifting > 0.0; }
 
   /// Throws std::invalid_argument if the scene has no water or an unknown wall condition.
   static FluidParams from_scene(const scene::Scene& s) {
@@ -58,6 +60,7 @@ struct FluidParams {
     p.no_slip = w.wall_condition == "no_slip";
     p.density_filter_every = w.density_filter_every;
     p.density_diffusion = w.density_diffusion;
+    p.particle_shifting = w.particle_shifting;
     p.euler_every = s.run.euler_every;
     p.cfl = s.run.cfl;
     p.c_a = s.run.c_a;

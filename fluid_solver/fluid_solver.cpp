@@ -68,6 +68,7 @@ std::vector<std::string> FluidSolver<D>::active_terms() const {
   if (params_.morris_on()) terms.push_back("morris_viscosity");
   if (params_.artificial_on()) terms.push_back("artificial_viscosity");
   if (params_.diffusion_on()) terms.push_back("density_diffusion");
+  if (params_.shifting_on()) terms.push_back("particle_shifting");
   if (particles_.wall_count() > 0)
     terms.push_back(params_.no_slip ? "walls_no_slip" : "walls_free_slip");
   if (params_.density_filter_every > 0) terms.push_back("shepard_density_filter");
@@ -90,6 +91,7 @@ void FluidSolver<D>::reorder_by_cell() {
   build_neighbours();
   neighbours_.cell_sorted_permutation(/*sort_fixed=*/step_ == 0, order_scratch_);
   particles_.permute(order_scratch_);
+  sph::remap_overlap_index(overlap_index_, order_scratch_, inverse_scratch_);
   neighbours_.invalidate();
   build_neighbours();
 }
@@ -115,7 +117,7 @@ template <class Kernel>
 void FluidSolver<D>::compute_rates_with(const Kernel& kernel) {
   const int every = params_.density_filter_every;
   filtered_this_step_ = every > 0 && step_ > 0 && step_ % static_cast<std::uint64_t>(every) == 0 &&
-                        !damping_.frozen(time_);
+                        !damping_.frozen(time_);  // an Euler step (next_step_is_euler)
   update_water_pressure(params_, particles_);
   update_wall_state(neighbours_, kernel, params_, particles_);
   if (filtered_this_step_) {  // the filter uses the wall densities; then walls follow the water
@@ -124,6 +126,9 @@ void FluidSolver<D>::compute_rates_with(const Kernel& kernel) {
     update_wall_state(neighbours_, kernel, params_, particles_);
   }
   const RateSummary r = compute_fluid_rates(neighbours_, kernel, params_, particles_);
+  if (params_.shifting_on()) {
+    shifting_.compute(neighbours_, kernel, params_.dp, r.max_speed, particles_);
+  }
   limits_ = sph::time_step_limits(params_.h, params_.eos.c0(), r.max_speed,
                                   params_.mu / params_.eos.rho0(), r.max_total_acceleration,
                                   params_.cfl, params_.viscous_coefficient, params_.c_a);
@@ -152,6 +157,7 @@ void FluidSolver<D>::fill_state(coupling::StepState& out, const std::vector<doub
   if (!overlap_min.empty() && !overlap_max.empty()) {
     const Vec lo = sph::to_vec<D>(overlap_min, "overlap_min");
     const Vec hi = sph::to_vec<D>(overlap_max, "overlap_max");
+    const bool euler = next_step_is_euler();
     for (std::int64_t a = 0; a < n; ++a) {
       const Vec& x = P.position[a];
       if ((x.array() < lo.array()).any() || (x.array() > hi.array()).any()) continue;
@@ -161,6 +167,15 @@ void FluidSolver<D>::fill_state(coupling::StepState& out, const std::vector<doub
       for (int k = 0; k < D; ++k) out.overlap_velocity.push_back(P.velocity[a][k]);
       out.overlap_density.push_back(P.density[a]);
       out.overlap_mass.push_back(P.mass[a]);
+      // The next update without the interaction (verlet_step_coupled): v^n + dt a on an Euler
+      // step, q^n + (dt_previous + dt) a on a Verlet step, a the latest rates' own
+      // acceleration; a zone particle keeps its prescribed velocity.
+      const bool zone = P.zone[a] >= 0;
+      const Vec& v = P.velocity[a];
+      const Vec& a_own = P.acceleration[a];
+      const Vec base = zone || euler ? v : Vec(P.velocity_previous[a] + dt_previous_ * a_own);
+      for (int k = 0; k < D; ++k) out.overlap_update_base.push_back(base[k]);
+      for (int k = 0; k < D; ++k) out.overlap_update_rate.push_back(zone ? 0.0 : a_own[k]);
     }
   }
 
@@ -232,6 +247,15 @@ void FluidSolver<D>::advance(double dt) {
 }
 
 template <int D>
+bool FluidSolver<D>::next_step_is_euler() const {
+  const int every = params_.density_filter_every;
+  const bool filtered = every > 0 && step_ > 0 && step_ % static_cast<std::uint64_t>(every) == 0 &&
+                        !damping_.frozen(time_);
+  const bool release = damping_.duration() > 0.0 && !damping_.released() && !damping_.frozen(time_);
+  return sph::is_euler_step(step_, params_.euler_every) || filtered || release;
+}
+
+template <int D>
 void FluidSolver<D>::integrate(double dt) {
   FluidParticles<D>& P = particles_;
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
@@ -240,23 +264,30 @@ void FluidSolver<D>::integrate(double dt) {
     std::fill(P.velocity.begin(), P.velocity.begin() + n, sph::Vec<D>::Zero());
     std::fill(P.velocity_previous.begin(), P.velocity_previous.begin() + n, sph::Vec<D>::Zero());
   }
-  const bool euler =
-      sph::is_euler_step(step_, params_.euler_every) || filtered_this_step_ || release;
+  // An Euler step also where dt jumps (the short last step of a run): the two Verlet time levels
+  // hold the odd and even chains, and a step much shorter than the last one would hand the
+  // reported velocity over to the other chain.
+  const bool dt_jump = std::abs(dt - dt_previous_) > 0.01 * dt_previous_;
+  const bool euler = next_step_is_euler() || release || dt_jump;
   zones_.begin_step(time_, dt);
   std::int64_t past_zone = 0;  // zone particles past their downstream face
+  const bool shifting = params_.shifting_on() && shifting_.concentration.size() == P.n_free;
 #pragma omp parallel for schedule(static) reduction(+ : past_zone)
   for (std::int64_t a = 0; a < n; ++a) {
     if (P.zone[a] >= 0) {  // prescribed velocity (flow_zones.h)
       past_zone += zones_.move(P.zone[a], P.position[a], P.velocity[a], P.velocity_previous[a], dt);
     } else {
-      sph::verlet_step_implicit_drag<D>(P.position[a], P.velocity[a], P.velocity_previous[a],
-                                        P.acceleration[a] + P.interaction[a], P.interaction_rate[a],
-                                        dt, euler);
+      sph::verlet_step_coupled<D>(P.position[a], P.velocity[a], P.velocity_previous[a],
+                                  P.acceleration[a], P.interaction[a], dt, dt_previous_, euler);
     }
     sph::verlet_step_scalar(P.density[a], P.density_previous[a], P.density_rate[a], dt, euler);
+    if (shifting && P.zone[a] < 0) {
+      shifting_.shift(params_.particle_shifting, params_.h, dt, a, P.position[a]);
+    }
     box_.wrap(P.position[a]);
   }
   if (past_zone > 0) born_count_ += zones_.renew(P, params_.volume, next_id_, inflow_mass_);
+  dt_previous_ = dt;
   remove_leaving_particles();
 }
 

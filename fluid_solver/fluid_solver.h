@@ -14,6 +14,7 @@
 #include "fluid_solver/flow_zones.h"
 #include "fluid_solver/fluid_params.h"
 #include "fluid_solver/fluid_particles.h"
+#include "fluid_solver/particle_shifting.h"
 #include "io/checkpoint_file.h"
 #include "io/snapshot_writer.h"
 #include "proto/coupling_client.h"
@@ -98,6 +99,9 @@ class FluidSolver {
   void build_neighbours();
   void reorder_by_cell();
   void integrate(double dt);
+  /// Whether the next advance() takes an Euler step of the modified Verlet scheme (the first
+  /// step, every euler_every, density-filter steps, the end of the damping stage).
+  bool next_step_is_euler() const;
   /// True if water particle a left the domain or is a free particle in an outflow zone.
   bool leaves(std::size_t a) const;
   void remove_leaving_particles();
@@ -125,15 +129,18 @@ class FluidSolver {
   double outflow_mass_ = 0.0;  ///< mass of the particles removed so far [kg]
   std::int64_t next_id_ = 0;   ///< id of the next particle born in an inflow zone
   bool filtered_this_step_ = false;
+  double dt_previous_ = 0.0;          ///< the last step's dt: the Verlet span is dt_previous + dt
   bool interaction_fresh_ = false;    ///< add_interaction called since the last advance
   bool interaction_nonzero_ = false;  ///< particles_.interaction may hold non-zero values
   double next_wall_removal_ = -1.0;   ///< earliest pending wall removal time (< 0: none)
   double physics_seconds_ = 0.0;
 
   std::vector<std::int32_t> overlap_index_;
+  std::vector<std::int32_t> inverse_scratch_;  ///< remap_overlap_index after a re-sort
   std::vector<std::int32_t> order_scratch_;
   std::vector<std::uint8_t> keep_scratch_;
   std::vector<double> filter_scratch_;
+  ParticleShiftingGradients<D> shifting_;  ///< of the latest rates (water.particle_shifting > 0)
 };
 
 extern template class FluidSolver<2>;

@@ -51,6 +51,7 @@ std::vector<io::FieldView> FluidSolver<D>::snapshot_fields() const {
   fields.push_back(f64("velocity", D, n ? P.velocity[0].data() : nullptr));
   fields.push_back(f64("density", 1, P.density.data()));
   fields.push_back(f64("pressure", 1, P.pressure.data()));
+  fields.push_back(f64("mass", 1, P.mass.data()));  // varies: rho(t = 0) dp^D
   io::FieldView id;
   id.name = "id";
   id.rows = n;

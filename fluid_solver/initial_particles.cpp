@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "fluid_solver/hydrostatic_initial.h"
+#include "fluid_solver/taylor_green_initial.h"
 #include "sph/geometry.h"
 
 namespace porosph::fluid {
@@ -72,6 +73,15 @@ InitialParticles<D> initial_particles(const scene::Scene& s, const FluidParams<D
   if (params.hydrostatic_initial) {
     hydrostatic_state<D>(P.position.data(), P.n_free, params.gravity, dp, params.eos,
                          P.pressure.data(), P.density.data());
+  }
+  if (s.water->initial_velocity == "taylor_green") {  // inflow-zone particles keep their own
+    const TaylorGreenVortex vortex{s.water->taylor_green_speed, s.water->taylor_green_wavelength};
+    for (std::size_t i = 0; i < P.n_free; ++i) {
+      if (P.zone[i] >= 0) continue;
+      P.velocity[i] = P.velocity_previous[i] = vortex.velocity<D>(P.position[i]);
+      P.pressure[i] += vortex.pressure<D>(P.position[i], params.eos.rho0());
+      P.density[i] = params.eos.density(P.pressure[i]);
+    }
   }
   // m = rho(t=0) dp^D: the particle volume m/rho equals the lattice volume dp^D, so the initial
   // hydrostatic state is an SPH equilibrium (with m = rho0 dp^D the volumes of the compressed deep

@@ -20,8 +20,9 @@ struct InitialParticles {
 /// every inflow zone (zone particles, filled like a block, velocity zones.velocity(z, 0)), then the
 /// wall particles of the walls acting on water (points beyond a periodic axis' range dropped).
 /// Densities: hydrostatic over all the water, zones included (hydrostatic_initial.h), when
-/// params.hydrostatic_initial, else rho0; masses m = rho(t=0) dp^D; ids 0..n-1. The arrays are
-/// reserved one zone-load ahead for the particles the zones will emit.
+/// params.hydrostatic_initial, else rho0; with water.initial_velocity = "taylor_green" the
+/// Taylor-Green velocity and pressure on top (taylor_green_initial.h); masses m = rho(t=0) dp^D;
+/// ids 0..n-1. The arrays are reserved one zone-load ahead for the particles the zones will emit.
 template <int D>
 InitialParticles<D> initial_particles(const scene::Scene& s, const FluidParams<D>& params,
                                       const sph::DomainBox<D>& box, const FlowZones<D>& zones);

@@ -71,6 +71,9 @@ struct StepState {
   std::vector<double> overlap_position, overlap_velocity, overlap_density, overlap_mass;
   std::vector<double> overlap_porosity;        ///< soil only
   std::vector<std::int32_t> overlap_material;  ///< soil only
+  /// Optional (n*D or empty), for the pairwise implicit drag: the velocity without interaction at
+  /// the end of the step is predicted as update_base + dt * update_rate (porosph.proto).
+  std::vector<double> overlap_update_base, overlap_update_rate;
   std::vector<double> region_min, region_max;
   Diagnostics diagnostics;
   /// Index of the checkpoint written after the last advance (asked by the last command); 0: none.
@@ -86,6 +89,8 @@ struct StepState {
     overlap_mass.clear();
     overlap_porosity.clear();
     overlap_material.clear();
+    overlap_update_base.clear();
+    overlap_update_rate.clear();
   }
 };
 

@@ -33,7 +33,9 @@ std::size_t consistent_dimension(const StepState& s) {
   const bool fits = d > 0 && s.overlap_velocity.size() == n * d && s.overlap_density.size() == n &&
                     s.overlap_mass.size() == n &&
                     (s.overlap_porosity.empty() || s.overlap_porosity.size() == n) &&
-                    (s.overlap_material.empty() || s.overlap_material.size() == n);
+                    (s.overlap_material.empty() || s.overlap_material.size() == n) &&
+                    (s.overlap_update_base.empty() || s.overlap_update_base.size() == n * d) &&
+                    s.overlap_update_rate.size() == s.overlap_update_base.size();
   return fits ? d : 0;
 }
 
@@ -43,7 +45,11 @@ bool same_particle(const StepState& a, const StepState& b, std::size_t i, std::s
          same_bits(a.overlap_velocity.data() + i * d, b.overlap_velocity.data() + i * d, d) &&
          same_bits(a.overlap_density.data() + i, b.overlap_density.data() + i, 1) &&
          (a.overlap_porosity.empty() ||
-          same_bits(a.overlap_porosity.data() + i, b.overlap_porosity.data() + i, 1));
+          same_bits(a.overlap_porosity.data() + i, b.overlap_porosity.data() + i, 1)) &&
+         (a.overlap_update_base.empty() || (same_bits(a.overlap_update_base.data() + i * d,
+                                                      b.overlap_update_base.data() + i * d, d) &&
+                                            same_bits(a.overlap_update_rate.data() + i * d,
+                                                      b.overlap_update_rate.data() + i * d, d)));
 }
 
 [[noreturn]] void throw_misfit(const std::string& phase, const std::string& what) {
@@ -62,7 +68,8 @@ StateDelta StateDeltaEncoder::next(const StepState& state) {
                    same_vector(state.overlap_id, last_.overlap_id) &&
                    same_vector(state.overlap_mass, last_.overlap_mass) &&
                    same_vector(state.overlap_material, last_.overlap_material) &&
-                   state.overlap_porosity.size() == last_.overlap_porosity.size();
+                   state.overlap_porosity.size() == last_.overlap_porosity.size() &&
+                   state.overlap_update_base.size() == last_.overlap_update_base.size();
   if (delta.same_set) {
     std::size_t tail = 0;
     while (tail < n && same_particle(state, last_, n - 1 - tail, d)) ++tail;
@@ -74,6 +81,10 @@ StateDelta StateDeltaEncoder::next(const StepState& state) {
     if (!state.overlap_porosity.empty()) {
       copy_prefix(state.overlap_porosity, last_.overlap_porosity, moved);
     }
+    if (!state.overlap_update_base.empty()) {
+      copy_prefix(state.overlap_update_base, last_.overlap_update_base, moved * d);
+      copy_prefix(state.overlap_update_rate, last_.overlap_update_rate, moved * d);
+    }
   } else {
     last_.overlap_id = state.overlap_id;
     last_.overlap_position = state.overlap_position;
@@ -82,6 +93,8 @@ StateDelta StateDeltaEncoder::next(const StepState& state) {
     last_.overlap_mass = state.overlap_mass;
     last_.overlap_porosity = state.overlap_porosity;
     last_.overlap_material = state.overlap_material;
+    last_.overlap_update_base = state.overlap_update_base;
+    last_.overlap_update_rate = state.overlap_update_rate;
   }
   have_last_ = true;
   return delta;
@@ -104,13 +117,16 @@ void apply_state_delta(StepState& full, StepState& received, int dimension,
   }
   const std::size_t moved = n - delta.unchanged_tail;
   const bool porosity = !full.overlap_porosity.empty();
+  const bool update = !full.overlap_update_base.empty();
   if (!received.overlap_id.empty() || !received.overlap_mass.empty() ||
       !received.overlap_material.empty()) {
     throw_misfit(phase, "ids, masses or materials sent with the same set");
   }
   if (received.overlap_position.size() != moved * d ||
       received.overlap_velocity.size() != moved * d || received.overlap_density.size() != moved ||
-      received.overlap_porosity.size() != (porosity ? moved : 0)) {
+      received.overlap_porosity.size() != (porosity ? moved : 0) ||
+      received.overlap_update_base.size() != (update ? moved * d : 0) ||
+      received.overlap_update_rate.size() != (update ? moved * d : 0)) {
     throw_misfit(phase, "per-particle arrays for other than the " + std::to_string(moved) +
                             " particles that may have changed");
   }
@@ -119,11 +135,17 @@ void apply_state_delta(StepState& full, StepState& received, int dimension,
     std::swap(full.overlap_velocity, received.overlap_velocity);
     std::swap(full.overlap_density, received.overlap_density);
     std::swap(full.overlap_porosity, received.overlap_porosity);
+    std::swap(full.overlap_update_base, received.overlap_update_base);
+    std::swap(full.overlap_update_rate, received.overlap_update_rate);
   } else {
     copy_prefix(received.overlap_position, full.overlap_position, moved * d);
     copy_prefix(received.overlap_velocity, full.overlap_velocity, moved * d);
     copy_prefix(received.overlap_density, full.overlap_density, moved);
     if (porosity) copy_prefix(received.overlap_porosity, full.overlap_porosity, moved);
+    if (update) {
+      copy_prefix(received.overlap_update_base, full.overlap_update_base, moved * d);
+      copy_prefix(received.overlap_update_rate, full.overlap_update_rate, moved * d);
+    }
   }
   full.step = received.step;
   full.time = received.time;

@@ -181,6 +181,8 @@ void to_wire(const coupling::StepState& in, const coupling::StateDelta& delta, S
   per_step(out.mutable_overlap_velocity(), in.overlap_velocity, sent.dimension);
   per_step(out.mutable_overlap_density(), in.overlap_density, 1);
   per_step(out.mutable_overlap_porosity(), in.overlap_porosity, 1);
+  per_step(out.mutable_overlap_update_base(), in.overlap_update_base, sent.dimension);
+  per_step(out.mutable_overlap_update_rate(), in.overlap_update_rate, sent.dimension);
   assign(out.mutable_region_min(), in.region_min);
   assign(out.mutable_region_max(), in.region_max);
   to_wire(in.diagnostics, *out.mutable_diagnostics());
@@ -205,6 +207,8 @@ void from_wire(const StepState& in, coupling::StepState& out) {
   assign(out.overlap_mass, in.overlap_mass());
   assign(out.overlap_porosity, in.overlap_porosity());
   assign(out.overlap_material, in.overlap_material());
+  assign(out.overlap_update_base, in.overlap_update_base());
+  assign(out.overlap_update_rate, in.overlap_update_rate());
   assign(out.region_min, in.region_min());
   assign(out.region_max, in.region_max());
   from_wire(in.diagnostics(), out.diagnostics);

@@ -25,22 +25,25 @@ std::size_t StateFrame::prepare(const coupling::StepState& state,
     return sent_.count(v, per_particle);
   };
   const std::size_t set_count = delta.same_set ? 0 : n;
-  body_bytes_ =
-      varint_field_bytes(1, state.step) + double_field_bytes(2, state.time) +
-      double_field_bytes(3, state.dt_limit) + double_field_bytes(4, state.dt_cfl) +
-      double_field_bytes(5, state.dt_viscous) + double_field_bytes(6, state.dt_force) +
-      packed_varints_bytes(7, set_count, id_bytes_) +
-      packed_doubles_bytes(8, per_step(state.overlap_position, sent_.dimension)) +
-      packed_doubles_bytes(9, per_step(state.overlap_velocity, sent_.dimension)) +
-      packed_doubles_bytes(10, per_step(state.overlap_density, 1)) +
-      packed_doubles_bytes(11, delta.same_set ? 0 : state.overlap_mass.size()) +
-      packed_doubles_bytes(12, per_step(state.overlap_porosity, 1)) +
-      packed_varints_bytes(13, delta.same_set ? 0 : state.overlap_material.size(),
-                           material_bytes_) +
-      delimited_bytes(14, diagnostics_bytes_) + packed_doubles_bytes(15, state.region_min.size()) +
-      packed_doubles_bytes(16, state.region_max.size()) +
-      varint_field_bytes(17, state.checkpoint_written) +
-      varint_field_bytes(18, delta.same_set ? 1 : 0) + varint_field_bytes(19, delta.unchanged_tail);
+  body_bytes_ = varint_field_bytes(1, state.step) + double_field_bytes(2, state.time) +
+                double_field_bytes(3, state.dt_limit) + double_field_bytes(4, state.dt_cfl) +
+                double_field_bytes(5, state.dt_viscous) + double_field_bytes(6, state.dt_force) +
+                packed_varints_bytes(7, set_count, id_bytes_) +
+                packed_doubles_bytes(8, per_step(state.overlap_position, sent_.dimension)) +
+                packed_doubles_bytes(9, per_step(state.overlap_velocity, sent_.dimension)) +
+                packed_doubles_bytes(10, per_step(state.overlap_density, 1)) +
+                packed_doubles_bytes(11, delta.same_set ? 0 : state.overlap_mass.size()) +
+                packed_doubles_bytes(12, per_step(state.overlap_porosity, 1)) +
+                packed_varints_bytes(13, delta.same_set ? 0 : state.overlap_material.size(),
+                                     material_bytes_) +
+                delimited_bytes(14, diagnostics_bytes_) +
+                packed_doubles_bytes(15, state.region_min.size()) +
+                packed_doubles_bytes(16, state.region_max.size()) +
+                varint_field_bytes(17, state.checkpoint_written) +
+                varint_field_bytes(18, delta.same_set ? 1 : 0) +
+                varint_field_bytes(19, delta.unchanged_tail) +
+                packed_doubles_bytes(20, per_step(state.overlap_update_base, sent_.dimension)) +
+                packed_doubles_bytes(21, per_step(state.overlap_update_rate, sent_.dimension));
   return delimited_bytes(Envelope::kStateFieldNumber, body_bytes_);
 }
 
@@ -72,7 +75,9 @@ void StateFrame::write(std::uint8_t* p) const {
   p = write_packed_doubles(16, s.region_max.data(), s.region_max.size(), p);
   p = write_varint_field(17, s.checkpoint_written, p);
   p = write_varint_field(18, delta_.same_set ? 1 : 0, p);
-  write_varint_field(19, delta_.unchanged_tail, p);
+  p = write_varint_field(19, delta_.unchanged_tail, p);
+  p = per_step(20, s.overlap_update_base, sent_.dimension, p);
+  per_step(21, s.overlap_update_rate, sent_.dimension, p);
 }
 
 std::size_t CommandFrame::prepare(const coupling::StepCommand& c) {
@@ -214,6 +219,12 @@ bool read_state_body(const std::uint8_t* data, std::size_t size, coupling::StepS
       case 19:
         ok = read_varint(in, type, v);
         out.delta.unchanged_tail = static_cast<std::uint32_t>(v);
+        break;
+      case 20:
+        ok = read_packed_doubles(in, type, out.overlap_update_base);
+        break;
+      case 21:
+        ok = read_packed_doubles(in, type, out.overlap_update_rate);
         break;
       default:
         ok = WireFormatLite::SkipField(&in, tag);

@@ -85,7 +85,6 @@ struct CouplingSettings {
   double submerged_saturation = 0.8;  ///< water fraction from which soil is submerged
   double wet_saturation = 0.1;        ///< water fraction from which soil is wet
   bool implicit_drag = true;          ///< the drag's rate goes to the solvers (implicit drag)
-  double implicit_drag_from = 0.25;   ///< lambda dt from which a particle's drag is implicit
 };
 
 /// Water phase (table [water]).
@@ -98,7 +97,11 @@ struct WaterPhase {
   double gamma = 7.0;               ///< Tait exponent of eq. 4
   int density_filter_every = 0;     ///< Shepard density re-initialisation every N steps; 0: off
   double density_diffusion = 0.1;   ///< delta of the density diffusion term (delta-SPH); 0: off
+  double particle_shifting = 0.0;   ///< A of the Fickian particle shifting (Lind 2012); 0: off
   bool hydrostatic_initial = true;  ///< initial density from hydrostatic pressure (inverse eq. 4)
+  std::string initial_velocity = "none";   ///< "none" (at rest) | "taylor_green"
+  double taylor_green_speed = 0.0;         ///< amplitude U of the Taylor-Green field [m/s]
+  double taylor_green_wavelength = 0.0;    ///< its wavelength L = 2 pi / k [m]
   std::string wall_condition = "no_slip";  ///< "no_slip" | "free_slip"
   std::string solver;                      ///< executable; empty: the built-in fluid_solver
   std::vector<Shape> blocks;               ///< regions filled with water at t = 0
@@ -137,6 +140,21 @@ struct SoilMaterial {
   bool wet_cohesion_loss = false;       ///< cohesion vanishes once the particle is wet
 };
 
+/// A surface load on the soil ([[soil.loads]]): the free soil particles inside [min, max] at t = 0
+/// carry `traction` times the box's extent across the traction's axis, shared equally.
+struct SoilLoad {
+  std::vector<double> min, max;  ///< the box selecting the loaded particles at t = 0 [m]
+  std::vector<double> traction;  ///< force per unit area once ramped up, along one axis [Pa]
+  double start_time = 0.0;       ///< [s]
+  double ramp_time = 0.0;        ///< [s]; 0: a step
+  std::string label;
+  /// 0 before start_time, then linear up to 1 over ramp_time.
+  double factor_at(double time) const;
+  /// The loaded face's size: the product of the box's extents along the axes the traction does
+  /// not act on [m^(D-1)] (2D: a length, the force per unit thickness).
+  double face_extent() const;
+};
+
 /// Soil phase (table [soil]).
 struct SoilPhase {
   std::string solver;                        ///< executable; empty: the built-in soil_solver
@@ -153,7 +171,8 @@ struct SoilPhase {
   int stress_filter_every = 0;          ///< stress filter every N steps; 0: off
   std::string stress_filter = "mls";    ///< its weights: "shepard" | "mls"
   std::vector<SoilMaterial> materials;
-  std::vector<Shape> blocks;  ///< regions filled with soil at t = 0; `material` names one
+  std::vector<Shape> blocks;    ///< regions filled with soil at t = 0; `material` names one
+  std::vector<SoilLoad> loads;  ///< surface loads
 
   /// Index into `materials` of the material named `name`, or -1.
   int material_index(const std::string& name) const;

@@ -90,7 +90,11 @@ Scene build_scene(const toml::table& root) {
     w.gamma = *(*water)["gamma"].value<double>();
     w.density_filter_every = static_cast<int>(*(*water)["density_filter_every"].value<int64_t>());
     w.density_diffusion = *(*water)["density_diffusion"].value<double>();
+    w.particle_shifting = *(*water)["particle_shifting"].value<double>();
     w.hydrostatic_initial = *(*water)["hydrostatic_initial"].value<bool>();
+    w.initial_velocity = text_of(*water, "initial_velocity");
+    w.taylor_green_speed = (*water)["taylor_green_speed"].value<double>().value_or(0.0);
+    w.taylor_green_wavelength = (*water)["taylor_green_wavelength"].value<double>().value_or(0.0);
     w.wall_condition = text_of(*water, "wall_condition");
     w.solver = text_of(*water, "solver");
     w.blocks = shapes_of(water->get_as<toml::array>("blocks"));

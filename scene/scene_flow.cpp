@@ -81,17 +81,10 @@ void add_coupling(SceneSchema& s) {
   s.keys.push_back(
       Key("coupling.implicit_drag", T::Bool)
           .fallback("true")
-          .doc("Take the seepage drag implicitly in each particle's own velocity "
-               "(the coupler sends its rate; sph/integrator.h): stable when the drag's "
-               "relaxation time is far below dt (low permeability); false: the "
-               "paper's explicit drag."));
-  s.keys.push_back(Key("coupling.implicit_drag_from", T::Float)
-                       .fallback("0.25")
-                       .at_least(0)
-                       .doc("With implicit_drag: a particle's drag is taken implicitly only where "
-                            "its rate lambda times dt reaches this value (the explicit drag nears "
-                            "its stability limit); below, explicit, which conserves momentum pair "
-                            "by pair. 0: implicit everywhere."));
+          .doc("Take the seepage drag implicitly, pair by pair: each soil-water pair's force at "
+               "the end of the step, linearised (docs/coupling.md); stable and exactly "
+               "momentum-conserving whatever the drag's relaxation time; false: the paper's "
+               "explicit drag at the start of the step."));
   s.keys.push_back(Key("coupling.wet_saturation", T::Float)
                        .fallback("0.1")
                        .above(0)
@@ -174,7 +167,6 @@ CouplingSettings build_coupling(const toml::table& root) {
     c.submerged_saturation = *(*t)["submerged_saturation"].value<double>();
     c.wet_saturation = *(*t)["wet_saturation"].value<double>();
     c.implicit_drag = *(*t)["implicit_drag"].value<bool>();
-    c.implicit_drag_from = *(*t)["implicit_drag_from"].value<double>();
   }
   return c;
 }

@@ -161,9 +161,40 @@ void add_water(SceneSchema& s) {
                             "(Molteni & Colagrossi 2009, with the hydrostatic correction of "
                             "Fourtakas et al. 2019), between water particles; 0 switches it off. "
                             "0.1 is the standard value."));
+  s.keys.push_back(Key("water.particle_shifting", T::Float)
+                       .fallback("0.0")
+                       .at_least(0)
+                       .doc("A of the Fickian particle shifting of Lind et al. (2012) with the "
+                            "speed scale of Sun et al. (2017): after each step a water particle "
+                            "moves by -A h U_max dt grad C (C the particle concentration, with "
+                            "Monaghan's tensile term, U_max the largest water speed), velocity and "
+                            "density unchanged (fluid_solver/particle_shifting.h); keeps the "
+                            "particles uniform in strained flows; 0 switches it off. No "
+                            "free-surface treatment: confined or periodic water only."));
   s.keys.push_back(Key("water.hydrostatic_initial", T::Bool)
                        .fallback("true")
                        .doc("Initial density from the hydrostatic pressure (inverse of eq. 4)."));
+  s.keys.push_back(Key("water.initial_velocity", T::String)
+                       .fallback("\"none\"")
+                       .one_of({"none", "taylor_green"})
+                       .doc("Velocity of the water at t = 0: none, at rest; taylor_green, the "
+                            "Taylor-Green vortex u = U sin(kx) cos(ky), v = -U cos(kx) sin(ky), "
+                            "k = 2 pi / L (x, y in the scene frame; in 3D uniform along z), with "
+                            "its pressure p = rho0 U^2 / 4 (cos 2kx + cos 2ky) added to the "
+                            "hydrostatic one (density: inverse of eq. 4)."));
+  s.keys.push_back(Key("water.taylor_green_speed", T::Float)
+                       .unit("m/s")
+                       .required()
+                       .above(0)
+                       .only_when("initial_velocity", {"taylor_green"})
+                       .doc("Velocity amplitude U of the Taylor-Green vortex."));
+  s.keys.push_back(Key("water.taylor_green_wavelength", T::Float)
+                       .unit("m")
+                       .required()
+                       .above(0)
+                       .only_when("initial_velocity", {"taylor_green"})
+                       .doc("Wavelength L = 2 pi / k of the Taylor-Green vortex: a periodic L x L "
+                            "box holds one period (four vortices)."));
   s.keys.push_back(Key("water.wall_condition", T::String)
                        .fallback("\"no_slip\"")
                        .one_of({"no_slip", "free_slip"})

@@ -100,6 +100,8 @@ void add_flow_zones(SceneSchema& s);
 void add_coupling(SceneSchema& s);
 /// [soil], [[soil.materials]], [[soil.blocks]] (scene_schema_soil.cpp).
 void add_soil(SceneSchema& s);
+/// [[soil.loads]] (scene_soil_loads.cpp).
+void add_soil_loads(SceneSchema& s);
 /// The region keys every filled block has: shape (box | polygon), min, max, vertices, for the
 /// array table `table` (e.g. "water.blocks[]") (scene_schema_shared.cpp).
 void add_filled_region_keys(SceneSchema& s, const std::string& table);

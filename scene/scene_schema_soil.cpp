@@ -233,6 +233,7 @@ void add_soil(SceneSchema& s) {
   add_soil_materials(s);
   add_seepage(s);
   add_soil_blocks(s);
+  add_soil_loads(s);
 }
 
 }  // namespace porosph::scene::schema_detail

@@ -132,6 +132,7 @@ void check_soil_consistency(const toml::table& soil, const ShapeChecker& shapes,
                   "unknown material '" + material + "'" + did_you_mean(material, names) +
                       "; known materials: " + comma_list(names));
   }
+  check_soil_loads(soil, shapes, errors);
 }
 
 SoilPhase build_soil_phase(const toml::table& soil) {
@@ -152,6 +153,7 @@ SoilPhase build_soil_phase(const toml::table& soil) {
   for (const auto& element : *soil.get_as<toml::array>("materials"))
     p.materials.push_back(material_of(*element.as_table()));
   p.blocks = shapes_of(soil.get_as<toml::array>("blocks"));
+  build_soil_loads(soil, p);
   return p;
 }
 

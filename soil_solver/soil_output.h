@@ -47,6 +47,11 @@ void fill_soil_overlap(const SoilParticles<D>& P, double volume, const std::vect
     out.overlap_mass.push_back(fixed ? P.reference_density[i] * volume : P.mass[i]);
     out.overlap_porosity.push_back(P.porosity[i]);
     out.overlap_material.push_back(static_cast<std::int32_t>(P.material[i]));
+    // The kick v^{n+1} = v^n + dt (a + a_int) starts from v^n; its own acceleration is predicted
+    // by the latest rates' (the coupler's pairwise implicit drag, porosph.proto). Fixed: at rest.
+    for (int k = 0; k < D; ++k) out.overlap_update_base.push_back(fixed ? 0.0 : P.velocity[i][k]);
+    for (int k = 0; k < D; ++k)
+      out.overlap_update_rate.push_back(fixed ? 0.0 : P.acceleration[i][k]);
   }
 }
 

@@ -38,6 +38,7 @@ struct SoilParticles {
   std::vector<std::uint8_t> fixed;     ///< 1 for fixed particles (snapshot field "fixed")
   std::vector<std::uint8_t> no_slip;   ///< fixed: 1 no-slip, 0 free-slip
   std::vector<std::uint8_t> wet;       ///< has touched water (sticky; wet_cohesion_loss)
+  std::vector<std::int32_t> load;      ///< index of the surface load it carries; -1: none
 
   // Derived per step, not part of the particle state (not resized, permuted or checkpointed with
   // the arrays above; whoever fills them sizes them):
@@ -57,7 +58,7 @@ struct SoilParticles {
         fn(density);
     fn(density_rate), fn(reference_density), fn(mass), fn(porosity), fn(plastic_strain);
     fn(saturation), fn(weight_ratio), fn(wet);
-    fn(remove_at), fn(id), fn(material), fn(fixed), fn(no_slip);
+    fn(remove_at), fn(id), fn(material), fn(fixed), fn(no_slip), fn(load);
   }
 
   /// Keeps the particles with keep[i] != 0, in order; n_free follows. Returns the number removed.
@@ -96,12 +97,14 @@ struct SoilParticles {
   std::vector<double>& scratch_for(double*) { return scratch_f64_; }
   std::vector<std::int64_t>& scratch_for(std::int64_t*) { return scratch_i64_; }
   std::vector<std::uint8_t>& scratch_for(std::uint8_t*) { return scratch_u8_; }
+  std::vector<std::int32_t>& scratch_for(std::int32_t*) { return scratch_i32_; }
 
   std::vector<Vec> scratch_vec_;
   std::vector<Tensor> scratch_tensor_;
   std::vector<double> scratch_f64_;
   std::vector<std::int64_t> scratch_i64_;
   std::vector<std::uint8_t> scratch_u8_;
+  std::vector<std::int32_t> scratch_i32_;
 };
 
 }  // namespace porosph::soil

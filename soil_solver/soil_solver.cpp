@@ -29,7 +29,8 @@ SoilSolver<D>::SoilSolver(const scene::Scene& s)
     : params_(SoilParams<D>::from_scene(s)),
       box_(sph::DomainBox<D>::from_scene(s, 2.0 * params_.h)),
       cubic_(params_.h),
-      wendland_(params_.h) {
+      wendland_(params_.h),
+      loads_(s.soil->loads) {
   using Vec = sph::Vec<D>;
   if (s.run.kernel == "cubic_spline") {
     kernel_kind_ = KernelKind::CubicSpline;
@@ -114,7 +115,9 @@ SoilSolver<D>::SoilSolver(const scene::Scene& s)
     P.fixed[i] = i < P.n_free ? 0 : 1;
     P.no_slip[i] = q.no_slip ? 1 : 0;
   }
+  if (s.water) mark_initially_submerged<D>(s.water->blocks, params_, P);
   if (params_.geostatic_initial) apply_geostatic_stress<D>(params_, P);
+  loads_.tag(P, params_.dp);
   neighbours_.set_skin(sph::kSolverSkinFraction * 2.0 * params_.h);
   reorder_by_cell();
 }
@@ -133,6 +136,7 @@ std::vector<std::string> SoilSolver<D>::active_terms() const {
   if (params_.geostatic_initial) terms.push_back("geostatic_initial_stress");
   if (params_.damping_duration > 0.0) terms.push_back("damping_stage");
   if (box_.any_periodic()) terms.push_back("periodic");
+  if (!loads_.empty()) terms.push_back("surface_loads");
   return terms;
 }
 
@@ -149,6 +153,7 @@ void SoilSolver<D>::reorder_by_cell() {
   // Fixed particles keep their stored order (they never move).
   neighbours_.cell_sorted_permutation(/*sort_fixed=*/false, order_scratch_);
   particles_.permute(order_scratch_);
+  sph::remap_overlap_index(overlap_index_, order_scratch_, inverse_scratch_);
   neighbours_.invalidate();
   build_neighbours();
 }
@@ -178,8 +183,10 @@ void SoilSolver<D>::compute_rates_with(const Kernel& kernel) {
   update_soil_wall_state(neighbours_, kernel, params_, particles_);
   if (params_.any_artificial_stress()) update_artificial_stress(params_, particles_);
   const SoilRateSummary r = compute_soil_rates(neighbours_, kernel, params_, particles_);
+  const double max_acceleration =
+      std::max(r.max_total_acceleration, loads_.apply(time_, particles_));
   limits_ = sph::time_step_limits(params_.h, params_.sound_speed, r.max_speed, 0.0,
-                                  r.max_total_acceleration, params_.cfl, 0.125, params_.c_a);
+                                  max_acceleration, params_.cfl, 0.125, params_.c_a);
 }
 
 template <int D>

@@ -25,6 +25,7 @@
 #include "scene/scene.h"
 #include "soil_solver/soil_params.h"
 #include "soil_solver/soil_particles.h"
+#include "soil_solver/surface_loads.h"
 #include "sph/domain_box.h"
 #include "sph/kernels.h"
 #include "sph/neighbour_list.h"
@@ -111,6 +112,7 @@ class SoilSolver {
   KernelKind kernel_kind_ = KernelKind::CubicSpline;
   sph::CubicSpline<D> cubic_;
   sph::WendlandC2<D> wendland_;
+  SurfaceLoads<D> loads_;  ///< [[soil.loads]]: tractions on tagged particles
   std::vector<sph::PreparedObservable<D>> observables_;
 
   SoilParticles<D> particles_;
@@ -128,6 +130,7 @@ class SoilSolver {
   double next_wall_removal_ = -1.0;
 
   std::vector<std::int32_t> overlap_index_;
+  std::vector<std::int32_t> inverse_scratch_;  ///< remap_overlap_index after a re-sort
   std::vector<std::int32_t> order_scratch_;
   std::vector<std::uint8_t> keep_scratch_;
   std::vector<Eigen::Matrix3d> filter_scratch_;

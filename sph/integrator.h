@@ -63,6 +63,31 @@ inline void verlet_step_implicit_drag(Vec<D>& x, Vec<D>& v, Vec<D>& v_previous, 
   v = v_next;
 }
 
+/// One modified-Verlet step with the particle's own acceleration `a_own` and a coupling
+/// acceleration `a_coupling` whose impulse over the step must be exactly dt a_coupling (a partner
+/// solver books and receives its opposite: the coupler's soil-water drag). The Verlet chain
+/// carries the own forces over the span dt_previous + dt from t^{n-1} to t^{n+1} (2 dt at a
+/// constant step; the centred difference of a variable step) and the coupling over dt:
+///   Euler:  v^{n+1} = v^n + dt (a_own + a_coupling)
+///   Verlet: v^{n+1} = q^n + (dt_previous + dt) a_own + dt a_coupling
+///   q^{n+1} = v^n + dt a_coupling        (the stored previous velocity, "folded")
+/// With v = u + w, u the Verlet chain of the own forces and w the running sum of the coupling
+/// impulses, q^n = u^{n-1} + w^n: the own forces conserve momentum on each chain, and the
+/// momentum changes by exactly dt sum m a_coupling per step, on Euler and Verlet steps alike.
+/// A steady state in which a stiff coupling balances the own force is kept whatever dt does
+/// (the variable span is what makes that hold when dt changes, e.g. the short last step).
+/// a_coupling = 0 at a constant step is verlet_step(). The position uses a_own + a_coupling.
+template <int D>
+inline void verlet_step_coupled(Vec<D>& x, Vec<D>& v, Vec<D>& v_previous, const Vec<D>& a_own,
+                                const Vec<D>& a_coupling, double dt, double dt_previous,
+                                bool euler) {
+  x += dt * v + (0.5 * dt * dt) * (a_own + a_coupling);
+  const Vec<D> v_next = euler ? Vec<D>(v + dt * (a_own + a_coupling))
+                              : Vec<D>(v_previous + (dt_previous + dt) * a_own + dt * a_coupling);
+  v_previous = v + dt * a_coupling;
+  v = v_next;
+}
+
 /// One modified-Verlet step of a scalar (e.g. density) with rate dq/dt.
 inline void verlet_step_scalar(double& q, double& q_previous, double rate, double dt, bool euler) {
   const double next = euler ? q + dt * rate : q_previous + 2.0 * dt * rate;

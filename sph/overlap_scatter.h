@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -27,6 +28,21 @@ void scatter_overlap_values(const std::vector<Index>& overlap_index,
     const std::size_t i = static_cast<std::size_t>(overlap_index[k]);
     if (i < movable) per_particle[i] = values[k];
   }
+}
+
+/// After the particles were re-ordered (new[i] = old[order[i]]), points each overlap index at its
+/// particle's new place. A solver re-sorts its particles in compute_rates(), after it reported the
+/// overlap set and before the coupler's answer is scattered onto that set: without this the
+/// interaction of that step lands on other particles (it did, every 100th step, until
+/// 2026-12-04: tests/cases/momentum_exchange_test.cpp). `inverse` is scratch (reused).
+template <class Index>
+void remap_overlap_index(std::vector<Index>& overlap_index, const std::vector<std::int32_t>& order,
+                         std::vector<std::int32_t>& inverse) {
+  if (overlap_index.empty()) return;
+  inverse.resize(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+    inverse[static_cast<std::size_t>(order[i])] = static_cast<std::int32_t>(i);
+  for (Index& index : overlap_index) index = static_cast<Index>(inverse[index]);
 }
 
 }  // namespace porosph::sph

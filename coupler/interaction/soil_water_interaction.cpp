@@ -90,6 +90,7 @@ SoilWaterInteraction::SoilWaterInteraction(const scene::Scene& scene, int thread
     throw std::invalid_argument("soil-water interaction: run.dimension must be 2 or 3");
   }
   damping_duration_ = scene.soil->damping_duration;
+  implicit_drag_ = scene.coupling.implicit_drag;
   material_count_ = scene.soil->materials.size();
   terms_ = interaction_terms(*scene.soil, scene.coupling.implicit_drag);
   out_.force_on_water.assign(dimension_, 0.0);
@@ -132,14 +133,23 @@ InteractionSummary SoilWaterInteraction::compute(const coupling::StepState& wate
   out_.force_on_water.assign(dimension_, 0.0);
   out_.force_on_soil.assign(dimension_, 0.0);
   out_.force_magnitude_sum = 0.0;
+  forces_ = false;
   if (water.overlap_id.empty() || soil.overlap_id.empty()) {
     out_.water_acceleration.clear();
     out_.soil_acceleration.clear();
     out_.saturation.clear();
     return {};
   }
-  const bool forces = !(time < damping_duration_);
-  return engine_->compute(water, soil, forces, out_);
+  forces_ = !(time < damping_duration_);
+  return engine_->compute(water, soil, forces_, out_);
+}
+
+void SoilWaterInteraction::finish_step(const coupling::StepState& water,
+                                       const coupling::StepState& soil, double dt) {
+  out_.explicit_force_on_water = out_.force_on_water;
+  out_.explicit_force_on_soil = out_.force_on_soil;
+  if (!forces_ || !implicit_drag_ || !(dt > 0.0)) return;
+  engine_->implicit_drag(water, soil, dt, out_);
 }
 
 }  // namespace porosph::coupler

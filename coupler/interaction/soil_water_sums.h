@@ -51,6 +51,10 @@ class InteractionEngine {
   virtual InteractionSummary compute(const coupling::StepState& water,
                                      const coupling::StepState& soil, bool forces,
                                      InteractionOutputs& out) = 0;
+  /// After compute() with forces and rates: replaces the accelerations and forces in `out` by
+  /// the pairwise implicit drag over the step dt (soil_water_interaction.h).
+  virtual void implicit_drag(const coupling::StepState& water, const coupling::StepState& soil,
+                             double dt, InteractionOutputs& out) = 0;
 };
 
 template <int D, class Kernel>
@@ -238,6 +242,7 @@ class SoilWaterSums final : public InteractionEngine {
     } else {
       out.soil_rate.clear();
     }
+    effective_mass_.resize(n);
     const int partials = threads_used_;  // per-thread buffers the water pass filled
     double force[D] = {}, magnitude = 0.0, a2_max = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : force[:D], magnitude) \
@@ -256,9 +261,12 @@ class SoilWaterSums final : public InteractionEngine {
       const double rho_s =
           submerged_density(rho, sums[D], p_.submerged_saturation, material.submerged_ratio);
       const double effective_mass = soil.overlap_mass[i] * rho_s / rho;  // m_i^s
+      effective_mass_[i] = effective_mass;
       Vec acceleration;
       for (int k = 0; k < D; ++k) acceleration[k] = sums[k] / rho_s;
-      if (rates) out.soil_rate[i] = sums[D + 1] / rho_s;
+      // A fixed bed never moves: no rate of its own (infinite inertia) in the pair's implicit
+      // denominator.
+      if (rates) out.soil_rate[i] = material.fixed ? 0.0 : sums[D + 1] / rho_s;
       for (int k = 0; k < D; ++k) {
         out.soil_acceleration[i * D + k] = acceleration[k];
         force[k] += effective_mass * acceleration[k];
@@ -271,6 +279,96 @@ class SoilWaterSums final : public InteractionEngine {
     max_a2 = std::max(max_a2, a2_max);
   }
 
+ public:
+  void implicit_drag(const coupling::StepState& water, const coupling::StepState& soil, double dt,
+                     InteractionOutputs& out) override {
+    const std::int64_t n_water = static_cast<std::int64_t>(water.overlap_id.size());
+    const std::size_t n_soil = grid_.soil_size();
+    predict(water, dt, water_predicted_);
+    predict(soil, dt, soil_predicted_);
+    const int max_threads = threads();
+    const std::size_t max_candidates = grid_.max_candidate_count();
+    double water_force[D] = {};
+    threads_used_ = 1;
+#pragma omp parallel reduction(+ : water_force[:D]) if (n_water >= kParallelFrom) \
+    num_threads(max_threads)
+    {
+      const int t = omp_get_thread_num();
+#pragma omp single
+      threads_used_ = omp_get_num_threads();
+      std::vector<double>& acc = partial_[t];
+      acc.assign(n_soil * D, 0.0);
+      std::vector<double>& w = pair_w_[t];
+      w.resize(max_candidates);
+#pragma omp for schedule(static)
+      for (std::int64_t a = 0; a < n_water; ++a) {
+        const std::size_t count = grid_.candidate_count(a);
+        const std::int32_t* soil_index = grid_.candidates(a);
+        const Vec x_a = Eigen::Map<const Vec>(water.overlap_position.data() + a * D);
+        for (std::size_t c = 0; c < count; ++c) {
+          Vec dx = x_a - soil_[soil_index[c]].position;
+          box_.minimum_image(dx);
+          w[c] = kernel_.w(dx.norm());
+        }
+        const double volume_a = water.overlap_mass[a] / water.overlap_density[a];
+        const double rate_a = out.water_rate[a];
+        Vec on_water = Vec::Zero();
+        for (std::size_t c = 0; c < count; ++c) {
+          const std::int32_t i = soil_index[c];
+          const SoilPairData& soil_i = soil_[i];
+          // Force on the soil of the pair [N / m^(3-D)]: eq. 13 at the predicted relative
+          // velocity, over 1 + dt (lambda_a + lambda_i) (one backward-Euler step of the pair's
+          // relative velocity, linearised; soil_water_interaction.h).
+          const Vec v_r = water_predicted_[a] - soil_predicted_[i];
+          const Vec f =
+              seepage_force<D>(soil_i.a, soil_i.b, v_r) *
+              (volume_a * soil_i.volume * w[c] / (1.0 + dt * (rate_a + out.soil_rate[i])));
+          double* soil_sums = acc.data() + static_cast<std::size_t>(i) * D;
+          for (int k = 0; k < D; ++k) soil_sums[k] += f[k];
+          on_water -= f;
+        }
+        for (int k = 0; k < D; ++k) {
+          out.water_acceleration[a * D + k] = on_water[k] / water.overlap_mass[a];
+          water_force[k] += on_water[k];
+        }
+      }
+    }
+    double soil_force[D] = {}, magnitude = 0.0;
+    for (std::int64_t a = 0; a < n_water; ++a) {
+      magnitude += water.overlap_mass[a] *
+                   Eigen::Map<const Vec>(out.water_acceleration.data() + a * D).norm();
+    }
+    for (std::size_t i = 0; i < n_soil; ++i) {
+      Vec force = Vec::Zero();
+      for (int t = 0; t < threads_used_; ++t)
+        force += Eigen::Map<const Vec>(partial_[t].data() + i * D);
+      for (int k = 0; k < D; ++k) {
+        out.soil_acceleration[i * D + k] = force[k] / effective_mass_[i];
+        soil_force[k] += force[k];
+      }
+      magnitude += force.norm();
+    }
+    out.force_on_water.assign(water_force, water_force + D);
+    out.force_on_soil.assign(soil_force, soil_force + D);
+    out.force_magnitude_sum = magnitude;
+  }
+
+ private:
+  /// The velocity of each overlap particle at the end of the step without the interaction:
+  /// update_base + dt update_rate as the solver sent them, else its velocity (a solver that sends
+  /// neither: the drag at v^n).
+  static void predict(const coupling::StepState& s, double dt, std::vector<Vec>& out) {
+    const std::size_t n = s.overlap_id.size();
+    out.resize(n);
+    const bool sent =
+        s.overlap_update_base.size() == n * D && s.overlap_update_rate.size() == n * D;
+    for (std::size_t i = 0; i < n; ++i) {
+      out[i] = sent ? Vec(Eigen::Map<const Vec>(s.overlap_update_base.data() + i * D) +
+                          dt * Eigen::Map<const Vec>(s.overlap_update_rate.data() + i * D))
+                    : Vec(Eigen::Map<const Vec>(s.overlap_velocity.data() + i * D));
+    }
+  }
+
   /// The thread count of the parallel loops: InteractionParameters::threads, or OpenMP's default.
   int threads() const { return p_.threads > 0 ? p_.threads : omp_get_max_threads(); }
 
@@ -279,6 +377,8 @@ class SoilWaterSums final : public InteractionEngine {
   sph::DomainBox<D> box_;
   CrossNeighbours<D> grid_;
   std::vector<SoilPairData> soil_;
+  std::vector<double> effective_mass_;                 ///< m_i^s per soil overlap particle
+  std::vector<Vec> water_predicted_, soil_predicted_;  ///< implicit_drag(): v* per particle
   std::vector<std::vector<double>> partial_;  ///< per thread: kStride sums per soil particle
   std::vector<std::vector<double>> pair_r_, pair_w_;  ///< per thread: r, W of one particle's pairs
   int threads_used_ = 1;

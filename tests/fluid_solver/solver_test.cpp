@@ -198,15 +198,15 @@ TEST(FluidSolver, WallsDisappearAtTheirRemovalTimeAndSnapshotsListEveryParticle)
   FluidSolver<2> f(s);
   EXPECT_EQ(f.particle_count(), 70u);
   auto fields = f.snapshot_fields();
-  ASSERT_EQ(fields.size(), 6u);
-  const char* names[] = {"position", "velocity", "density", "pressure", "id", "fixed"};
-  for (std::size_t i = 0; i < 6; ++i) {
+  ASSERT_EQ(fields.size(), 7u);
+  const char* names[] = {"position", "velocity", "density", "pressure", "mass", "id", "fixed"};
+  for (std::size_t i = 0; i < 7; ++i) {
     EXPECT_EQ(fields[i].name, names[i]);
     EXPECT_EQ(fields[i].rows, 70u);
   }
   EXPECT_EQ(fields[0].cols, 2u);
   int fixed = 0;
-  for (std::size_t i = 0; i < 70; ++i) fixed += fields[5].u8[i];
+  for (std::size_t i = 0; i < 70; ++i) fixed += fields[6].u8[i];
   EXPECT_EQ(fixed, 60);
   for (int i = 0; i < 3; ++i) {
     f.compute_rates();
@@ -214,7 +214,7 @@ TEST(FluidSolver, WallsDisappearAtTheirRemovalTimeAndSnapshotsListEveryParticle)
   }
   EXPECT_EQ(f.particle_count(), 40u);
   EXPECT_EQ(f.free_count(), 10u);
-  EXPECT_EQ(f.snapshot_fields()[4].rows, 40u);
+  EXPECT_EQ(f.snapshot_fields()[5].rows, 40u);
 }
 
 TEST(FluidSolver, RejectsBadScenes) {

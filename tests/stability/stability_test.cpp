@@ -84,15 +84,19 @@ TEST(Stability, VeryLowPermeabilityKeepsDarcysLaw) {
   EXPECT_NEAR(q, expected, 0.02 * expected);
 }
 
-// The same scene with the paper's explicit drag blows up (measured: max speed 261 m/s, kinetic
-// energy 8.5e4 J against a bound of 1.2 J, dt down to 5e-9 s): why the implicit drag exists.
-TEST(Stability, VeryLowPermeabilityWithExplicitDragViolatesTheEnergyBound) {
+// The same scene with the paper's explicit drag fails: why the implicit drag exists. Measured
+// with the drag integrated over dt by both solvers (2026-12-04): dt collapses to 2e-7 s (30x below
+// the implicit run's) and the water rises at 0.19 m/s where Darcy's law gives 9.7e-7 m/s down;
+// before the water's Verlet step carried the drag over dt (over 2 dt) it blew up to 261 m/s.
+TEST(Stability, VeryLowPermeabilityWithExplicitDragBreaksDarcysLaw) {
   const auto run =
       run_case("darcy_column", {"soil.materials.0.effective_diameter=1e-5", "run.max_steps=3000",
                                 "run.end_time=1", "coupling.implicit_drag=false"});
   ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
-  const double ke = run.record.at("phases").at("water").at("final").at("kinetic_energy");
-  EXPECT_GT(ke, 100.0 * energy_bound(run.record, 0.0));
+  const double darcy = 9.6912e-7;
+  const double q = -run.record.at("observables").at("darcy_velocity").get<double>();
+  EXPECT_GT(std::abs(q - darcy), 1e3 * darcy) << "q = " << q;
+  EXPECT_LT(run.record.at("dt").at("mean").get<double>(), 1e-6);
 }
 
 // Fast inflow: the rockfill dam at dp 0.02 fed with 10x the paper's 19.36 l/s (inflow speed

@@ -12,8 +12,23 @@ Every combination of the --vary values is one variant (a Cartesian product), run
 `porosph_validate CHECK OUT/variant_NN`. The error of a variant is the first figure of
 porosph_validate's first summary line (its `error` column; an absolute value, % stripped).
 Variants already run (OUT/variant_NN/run.json, and study_overrides.json with the same
-overrides) are not rerun.
+overrides; not one whose status is still "running") are not rerun.
 Exit status: 0 when every variant ran to completion, 1 otherwise (the table is still written).
+
+Convergence mode: --converge KEY=V1,V2,... instead of --vary runs one level per value (KEY is the
+resolution, normally run.dp; its values are sorted coarse to fine) into OUT/dp_VALUE and writes
+convergence.csv (error per level, observed order p between successive levels, Richardson value of
+the measured quantity with that p) and convergence.png (log-log error against dp with the slope
+--expected-order, default 2, drawn). Its verdict fails, exit status 1, when the error grows from
+one level to the next (or a level has no error); arithmetic in tools/study/convergence.py.
+
+  tools/study/porosph_study.py cases/darcy_column/scene.toml --check darcy_column \\
+      --converge run.dp=0.005,0.0025,0.00125 --out runs/converge_darcy
+
+--quantity TEXT (either mode) takes the error from the summary line whose quantity contains TEXT
+(case-insensitive) instead of the first one, e.g. --quantity "max speed". --error-from value takes
+|value - reference| (first number of each column) instead of the error column, whose rounding
+(e.g. "0.02 %") can hide a change between levels.
 """
 import argparse
 import csv
@@ -25,23 +40,34 @@ import re
 import subprocess
 import sys
 
+import convergence
+
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 
-def parse_vary(text):
+def parse_vary(text, option="--vary"):
     if "=" not in text:
-        raise SystemExit(f"porosph_study: --vary '{text}': expected KEY=V1,V2,...")
+        raise SystemExit(f"porosph_study: {option} '{text}': expected KEY=V1,V2,...")
     key, values = text.split("=", 1)
     values = [v for v in values.split(",") if v]
     if not values:
-        raise SystemExit(f"porosph_study: --vary '{text}': no values")
+        raise SystemExit(f"porosph_study: {option} '{text}': no values")
     return key, values
+
+
+def numeric_value(text):
+    """The first number in text: '1.25 %' -> 1.25, '-0.0040 m' -> -0.004, '-' -> nan."""
+    match = re.search(r"[-+]?\d+(\.\d*)?([eE][-+]?\d+)?", text)
+    return float(match.group(0)) if match else math.nan
 
 
 def numeric_error(text):
     """'1.25 %' -> 1.25, '+0.0040' -> 0.004, '-' -> nan."""
-    match = re.search(r"[-+]?\d+(\.\d*)?([eE][-+]?\d+)?", text)
-    return abs(float(match.group(0))) if match else math.nan
+    return abs(numeric_value(text))
+
+
+def show(x, spec):
+    return "-" if math.isnan(x) else format(x, spec)
 
 
 def run_variant(args, overrides, out):
@@ -52,7 +78,9 @@ def run_variant(args, overrides, out):
         with open(marker) as f:
             if json.load(f) == overrides:
                 with open(record) as g:
-                    return json.load(g)
+                    run = json.load(g)
+                if run.get("status") != "running":  # not one still running or killed
+                    return run
     command = [os.path.join(args.bin, "coupler"), "run", args.scene, "--out", out,
                "--no-progress"]
     for o in overrides:
@@ -70,9 +98,14 @@ def run_variant(args, overrides, out):
 def validate(args, out):
     command = [os.path.join(args.bin, "porosph_validate"), args.check, out] + args.check_args
     result = subprocess.run(command, capture_output=True, text=True)
-    for line in result.stdout.splitlines():
-        if line.startswith("summary\t"):
-            return line.split("\t")[1:]
+    lines = [l.split("\t")[1:] for l in result.stdout.splitlines() if l.startswith("summary\t")]
+    if not args.quantity:
+        return lines[0] if lines else None
+    for line in lines:
+        if args.quantity.lower() in line[0].lower():
+            return line
+    print(f"porosph_study: no summary line of {args.check} names '{args.quantity}'; it has: "
+          + "; ".join(l[0] for l in lines), file=sys.stderr)
     return None
 
 
@@ -98,6 +131,72 @@ def plot(rows, keys, path):
     plt.close(fig)
 
 
+def measure(args, overrides, out, row):
+    """Runs (or reuses) one variant, validates it and fills row; True when the run completed."""
+    run = run_variant(args, overrides, out)
+    row["status"] = run["status"] if run else "no run.json"
+    if run:
+        row.update(steps=run["steps"], wall_seconds=round(run["wall_seconds"]["total"], 3),
+                   particles=sum(p["particles"]["total"] for p in run["phases"].values()))
+    summary = validate(args, out) if run else None
+    if summary:
+        row.update(quantity=summary[0], value=summary[1], reference=summary[2],
+                   error=summary[3], target=summary[4], verdict=summary[5])
+    row["error_value"] = numeric_error(row.get("error", "-"))
+    if args.error_from == "value":  # |value - reference|, in the unit of the value
+        row["error_value"] = abs(numeric_value(row.get("value", "-"))
+                                 - numeric_value(row.get("reference", "-")))
+    return row["status"] == "completed"
+
+
+def converge(args):
+    """--converge KEY=V1,V2,...: one level per value, coarse to fine; convergence.csv/png."""
+    key, values = parse_vary(args.converge, "--converge")
+    try:
+        levels = sorted(values, key=float, reverse=True)
+    except ValueError:
+        raise SystemExit(f"porosph_study: --converge '{args.converge}': values must be numbers")
+    if len({float(v) for v in levels}) != len(levels) or len(levels) < 2:
+        raise SystemExit(f"porosph_study: --converge '{args.converge}': need two or more "
+                         "different levels")
+    rows, all_completed = [], True
+    for index, value in enumerate(levels):
+        row = {"level": index, key: value}
+        out = os.path.join(args.out, f"{key.split('.')[-1]}_{value}")  # a level added later
+        all_completed &= measure(args, args.fixed + [f"{key}={value}"], out, row)
+        row["value_numeric"] = numeric_value(row.get("value", "-"))
+        rows.append(row)
+    dps = [float(v) for v in levels]
+    # Richardson applies to a measured quantity, not to a value that is the error itself
+    values = [math.nan if r.get("value") == r.get("error") else r["value_numeric"] for r in rows]
+    orders, extrapolated, verdict, passed = convergence.analyse(
+        dps, [r["error_value"] for r in rows], values)
+    for row, p, q in zip(rows, orders, extrapolated):
+        row.update(observed_order=p, richardson_value=q, convergence_verdict=verdict)
+    columns = ["level", key, "status", "particles", "steps", "wall_seconds", "quantity", "value",
+               "reference", "error", "error_value", "observed_order", "richardson_value",
+               "target", "verdict", "convergence_verdict"]
+    convergence.write_csv(rows, columns, os.path.join(args.out, "convergence.csv"))
+    quantity = next((r["quantity"] for r in rows if r.get("quantity")), "error")
+    if not args.no_plot:
+        ylabel = ("|value - reference|" if args.error_from == "value"
+                  else "error (summary's error column)")
+        convergence.plot(dps, [r["error_value"] for r in rows], orders, args.expected_order,
+                         f"{args.check}: {quantity}\n{verdict}", ylabel,
+                         os.path.join(args.out, "convergence.png"))
+    print(f"{'level':>5} {key:>10} {'wall [s]':>9} {'value':>16} {'error':>10} {'e used':>10}"
+          f" {'order p':>8} {'Richardson Q':>13}")
+    for r in rows:
+        print(f"{r['level']:>5} {r[key]:>10} {convergence.fmt(r.get('wall_seconds', '')):>9} "
+              f"{r.get('value', '-'):>16} {r.get('error', '-'):>10} "
+              f"{show(r['error_value'], '.4g'):>10} {show(r['observed_order'], '.3f'):>8} "
+              f"{show(r['richardson_value'], '.6g'):>13}")
+    print(f"quantity: {quantity}; p = log(e_i/e_i+1)/log(dp_i/dp_i+1); Richardson "
+          "Q_R = Q_f + (Q_f - Q_c)/(r^p - 1) with the p of the same row")
+    print(f"verdict: {verdict}")
+    return 0 if passed and all_completed else 1
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("scene")
@@ -105,34 +204,33 @@ def main():
     parser.add_argument("--check-arg", dest="check_args", action="append", default=[],
                         help="extra argument for porosph_validate (repeatable)")
     parser.add_argument("--vary", action="append", default=[], help="KEY=V1,V2,...")
+    parser.add_argument("--converge", help="KEY=DP1,DP2,...: convergence mode (see above)")
+    parser.add_argument("--expected-order", type=float, default=2.0,
+                        help="slope of the reference line in convergence.png (default 2)")
+    parser.add_argument("--quantity", help="pick the summary line whose quantity contains this")
+    parser.add_argument("--error-from", choices=["column", "value"], default="column",
+                        help="error = the summary's error column (default) or |value - reference|")
     parser.add_argument("--set", dest="fixed", action="append", default=[],
                         help="KEY=VALUE for every variant")
     parser.add_argument("--out", required=True)
     parser.add_argument("--bin", default=os.path.join(ROOT, "build", "bin"))
     parser.add_argument("--no-plot", action="store_true")
     args = parser.parse_args()
-    if not args.vary:
-        raise SystemExit("porosph_study: give at least one --vary KEY=V1,V2,...")
+    if bool(args.vary) == bool(args.converge):
+        raise SystemExit("porosph_study: give --vary KEY=V1,V2,... or --converge KEY=DP1,DP2,...")
+    os.makedirs(args.out, exist_ok=True)
+    if args.converge:
+        return converge(args)
     varies = [parse_vary(v) for v in args.vary]
     keys = [k for k, _ in varies]
-    os.makedirs(args.out, exist_ok=True)
 
     rows, all_completed = [], True
     for index, values in enumerate(itertools.product(*[v for _, v in varies])):
         overrides = args.fixed + [f"{k}={v}" for k, v in zip(keys, values)]
         out = os.path.join(args.out, f"variant_{index:02d}")
-        run = run_variant(args, overrides, out)
         row = dict(zip(keys, values))
-        row.update(variant=index, status=run["status"] if run else "no run.json")
-        if run:
-            row.update(steps=run["steps"], wall_seconds=round(run["wall_seconds"]["total"], 3),
-                       particles=sum(p["particles"]["total"] for p in run["phases"].values()))
-        all_completed &= row["status"] == "completed"
-        summary = validate(args, out) if run else None
-        if summary:
-            row.update(quantity=summary[0], value=summary[1], reference=summary[2],
-                       error=summary[3], target=summary[4], verdict=summary[5])
-        row["error_value"] = numeric_error(row.get("error", "-"))
+        row["variant"] = index
+        all_completed &= measure(args, overrides, out, row)
         rows.append(row)
 
     columns = (["variant"] + keys + ["status", "particles", "steps", "wall_seconds", "quantity",

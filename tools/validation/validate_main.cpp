@@ -7,16 +7,21 @@
 //   porosph_validate fluidized_bed RUN_DIR [--window SECONDS]
 //   porosph_validate rockfill_overtopping RUN_DIR [--series FILE]   (also FILE_dupuit.csv)
 //   porosph_validate hydraulic_heave RUN_DIR [--series FILE]
+//   porosph_validate consolidation RUN_DIR [--series FILE]   (also FILE_isochrones.csv)
+//   porosph_validate taylor_green RUN_DIR
+//   porosph_validate elastic_column RUN_DIR
 // Exit code 0 when the target is met, 1 when not, 2 on unreadable input.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <fstream>
 
 #include "tools/validation/case_checks.h"
+#include "tools/validation/consolidation_report.h"
 #include "tools/validation/dam_case_checks.h"
 #include "tools/validation/fluidized_bed_check.h"
 #include "tools/validation/seepage_checks.h"
 #include "tools/validation/soil_checks.h"
+#include "tools/validation/verification_report.h"
 
 #ifndef POROSPH_SOURCE_DIR
 #define POROSPH_SOURCE_DIR "."
@@ -236,8 +241,24 @@ int main(int argc, char** argv) {
   auto* heave = app.add_subcommand("hydraulic_heave", "failure time, head, gravel advance");
   heave->add_option("run_dir", run_dir)->required();
   heave->add_option("--series", series, "write the gravel bottom vs time as CSV to this file");
+  auto* taylor_green = app.add_subcommand("taylor_green", "kinetic-energy decay rate vs 4 nu k^2");
+  taylor_green->add_option("run_dir", run_dir)->required();
+  auto* elastic_column =
+      app.add_subcommand("elastic_column", "period and static settlement vs the 1D closed form");
+  elastic_column->add_option("run_dir", run_dir)->required();
+  auto* consolidation =
+      app.add_subcommand("consolidation", "Terzaghi: U(T_v), isochrones, B, final settlement");
+  consolidation->add_option("run_dir", run_dir)->required();
+  consolidation->add_option("--series", series, "write U(T_v) and the isochrones as CSV");
   CLI11_PARSE(app, argc, argv);
   try {
+    if (*consolidation) {
+      return porosph::validation::report_consolidation(
+          porosph::validation::check_consolidation(run_dir), series);
+    }
+    namespace v = porosph::validation;
+    if (*taylor_green) return v::report_taylor_green(v::check_taylor_green(run_dir));
+    if (*elastic_column) return v::report_elastic_column(v::check_elastic_column(run_dir));
     if (*rockfill) return report_rockfill(porosph::validation::check_rockfill(run_dir), series);
     if (*heave) return report_heave(porosph::validation::check_heave(run_dir), series);
     if (*bed) {

@@ -1,0 +1,92 @@
+// Surface loads on the soil ([[soil.loads]]): a traction carried by the soil particles of a region
+// (a surcharge, a footing, the piston of an oedometer): its schema, the relations between its keys
+// and its typed form.
+#include "scene/scene_internal.h"
+#include "scene/scene_schema_builder.h"
+
+namespace porosph::scene {
+namespace schema_detail {
+
+void add_soil_loads(SceneSchema& s) {
+  s.tables.push_back(
+      {"soil.loads[]", true, false,
+       "Surface loads: a traction on a face of the soil. Of the free soil particles whose "
+       "centres lie in the box [min, max] at t = 0, the outermost layer facing the traction "
+       "(those within dp / 2 of the farthest one against it: the top row for a downward load) "
+       "carries it for good, as it moves. The total force is the traction times the box's extent "
+       "across the traction's axis (2D: per unit thickness), shared equally by those "
+       "particles."});
+  s.keys.push_back(Key("soil.loads[].min", T::Vector).unit("m").required().doc("Lower corner."));
+  s.keys.push_back(Key("soil.loads[].max", T::Vector)
+                       .unit("m")
+                       .required()
+                       .doc("Upper corner; greater than min in every component."));
+  s.keys.push_back(Key("soil.loads[].traction", T::Vector)
+                       .unit("Pa")
+                       .required()
+                       .doc("Force per unit area of the loaded face once ramped up, along one "
+                            "axis, e.g. [0.0, -1000.0] pushes down with 1 kPa."));
+  s.keys.push_back(Key("soil.loads[].start_time", T::Float)
+                       .unit("s")
+                       .fallback("0.0")
+                       .at_least(0)
+                       .doc("Time at which the load starts (before it: 0)."));
+  s.keys.push_back(Key("soil.loads[].ramp_time", T::Float)
+                       .unit("s")
+                       .fallback("0.0")
+                       .at_least(0)
+                       .doc("The load grows linearly from 0 to the traction over this time; 0: "
+                            "a step."));
+  s.keys.push_back(Key("soil.loads[].label", T::String)
+                       .fallback("\"\"")
+                       .doc("Optional name shown in errors and output."));
+}
+
+}  // namespace schema_detail
+
+void check_soil_loads(const toml::table& soil, const ShapeChecker& shapes,
+                      const ErrorContext& errors) {
+  const toml::array* loads = soil.get_as<toml::array>("loads");
+  if (!loads) return;
+  for (std::size_t i = 0; i < loads->size(); ++i) {
+    const toml::table& load = *loads->get(i)->as_table();
+    const std::string key = "soil.loads[" + std::to_string(i) + "]";
+    shapes.ordered(load.get("min"), load.get("max"), key + ".max", key + ".min");
+    int nonzero = 0;
+    for (double c : vector_of(load.get("traction"))) nonzero += c != 0.0;
+    if (nonzero != 1)
+      errors.fail(load.get("traction"), key + ".traction",
+                  "must act along one axis and not vanish, e.g. [0.0, -1000.0]");
+  }
+}
+
+void build_soil_loads(const toml::table& soil, SoilPhase& p) {
+  const toml::array* loads = soil.get_as<toml::array>("loads");
+  if (!loads) return;
+  for (const auto& element : *loads) {
+    const toml::table& t = *element.as_table();
+    SoilLoad load;
+    load.min = vector_of(t.get("min"));
+    load.max = vector_of(t.get("max"));
+    load.traction = vector_of(t.get("traction"));
+    load.start_time = *t["start_time"].value<double>();
+    load.ramp_time = *t["ramp_time"].value<double>();
+    load.label = text_of(t, "label");
+    p.loads.push_back(std::move(load));
+  }
+}
+
+double SoilLoad::factor_at(double time) const {
+  if (time < start_time) return 0.0;
+  if (ramp_time <= 0.0 || time >= start_time + ramp_time) return 1.0;
+  return (time - start_time) / ramp_time;
+}
+
+double SoilLoad::face_extent() const {
+  double extent = 1.0;
+  for (std::size_t k = 0; k < traction.size(); ++k)
+    if (traction[k] == 0.0) extent *= max[k] - min[k];
+  return extent;
+}
+
+}  // namespace porosph::scene

@@ -1,0 +1,15 @@
+// Printed verdicts of the closed-form verification cases (verification_checks.h) for
+// porosph_validate: a human-readable block, then the machine-readable "summary" lines that
+// tools/validation/report.py reads (the format of validate_main.cpp's print_summary).
+#pragma once
+
+#include "tools/validation/verification_checks.h"
+
+namespace porosph::validation {
+
+/// Prints the Taylor-Green verdict; returns 0 when the target is met, else 1.
+int report_taylor_green(const TaylorGreenCheck& c);
+/// Prints the elastic column verdict; returns 0 when the targets are met, else 1.
+int report_elastic_column(const ElasticColumnCheck& c);
+
+}  // namespace porosph::validation
