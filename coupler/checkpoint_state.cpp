@@ -100,7 +100,8 @@ json phase_state(const PhaseRecord& p) {
           {"snapshots", snapshots},
           {"physics_seconds", exact(p.reported.physics_seconds)},
           {"wall_seconds", exact(p.reported.wall_seconds)},
-          {"communication_seconds", exact(p.reported.communication_seconds)}};
+          {"communication_seconds", exact(p.reported.communication_seconds)},
+          {"mass_imbalance_max", exact(p.mass_imbalance_max)}};
 }
 
 void restore_phase(const json& j, PhaseRecord& p) {
@@ -110,6 +111,7 @@ void restore_phase(const json& j, PhaseRecord& p) {
   p.h5_file = j.at("h5_file").get<std::string>();
   p.initial = diagnostics_of(j.at("initial"));
   p.last = diagnostics_of(j.at("last"));
+  p.mass_imbalance_max = exact_of(j.at("mass_imbalance_max"));
   p.snapshots.clear();
   for (const json& s : j.at("snapshots")) {
     p.snapshots.push_back({s.at("index").get<std::uint32_t>(), exact_of(s.at("time")),

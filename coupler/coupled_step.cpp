@@ -184,6 +184,9 @@ void CoupledStepLoop::append_timeseries_row(double dt) {
     row_.push_back(static_cast<double>(d.particle_count));
     row_.push_back(static_cast<double>(d.removed_count));
     row_.push_back(static_cast<double>(state.overlap_id.size()));
+    row_.push_back(d.inflow_mass);
+    row_.push_back(d.outflow_mass);
+    record_.phases[phase].note_mass_balance(d);
   }
   if (interaction_) {
     for (double impulse : record_.ledger.impulse_to_soil) row_.push_back(impulse);

@@ -1,7 +1,9 @@
 // Everything the coupler learns during a run, and how it becomes run.json / run.xdmf.
 #pragma once
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -73,6 +75,18 @@ struct PhaseRecord {
   coupling::Timing reported;
   /// `reported` at the checkpoint this segment resumed from: the earlier segments' share.
   coupling::Timing before_resume;
+  /// The largest |mass - (initial + inflow - outflow)| / (initial + inflow - outflow) over the
+  /// outputs so far (checkpointed).
+  double mass_imbalance_max = 0.0;
+
+  /// The mass balance of an output's diagnostics (against `initial`).
+  double mass_imbalance(const coupling::Diagnostics& d) const {
+    const double expected = initial.mass + d.inflow_mass - d.outflow_mass;
+    return expected > 0.0 ? std::abs(d.mass - expected) / expected : 0.0;
+  }
+  void note_mass_balance(const coupling::Diagnostics& d) {
+    mass_imbalance_max = std::max(mass_imbalance_max, mass_imbalance(d));
+  }
 };
 
 /// The phase's wall, physics and communication seconds over all the run's segments: the earlier

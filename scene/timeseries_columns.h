@@ -20,6 +20,9 @@ inline std::vector<std::string> builtin_timeseries_columns(const std::vector<std
     for (int k = 0; k < dimension; ++k) columns.push_back(phase + "_momentum_" + axis_name(k));
     for (const char* total : {"_mass", "_particles", "_removed", "_overlap"})
       columns.push_back(phase + total);
+    // Cumulative mass that entered (inflow zones) and left (outflow zones, the domain)
+    // [kg/m^(3-D)]: <phase>_mass = its first row + inflow - outflow, to round-off, at every row.
+    for (const char* total : {"_mass_inflow", "_mass_outflow"}) columns.push_back(phase + total);
   }
   if (coupled) {
     // Cumulative interaction impulses [N s] up to t, and the soil-water pairs at t.

@@ -171,18 +171,9 @@ class SoilWaterSums final : public InteractionEngine {
       for (std::int64_t a = 0; a < n_water; ++a) {
         const std::size_t count = grid_.candidate_count(a);
         const std::int32_t* soil_index = grid_.candidates(a);
-        const Vec x_a = Eigen::Map<const Vec>(water.overlap_position.data() + a * D);
-        for (std::size_t c = 0; c < count; ++c) {
-          Vec dx = x_a - soil_[soil_index[c]].position;
-          box_.minimum_image(dx);
-          r[c] = dx.squaredNorm();
-        }
+        candidate_kernel_values(water, a, r.data(), w.data());
         std::size_t near = 0;
-        for (std::size_t c = 0; c < count; ++c) {  // vectorises: no data-dependent branch
-          r[c] = std::sqrt(r[c]);
-          w[c] = kernel_.w(r[c]);  // 0 beyond the support
-          near += r[c] < support;
-        }
+        for (std::size_t c = 0; c < count; ++c) near += r[c] < support;
         pairs += near;
         const Vec v_a = Eigen::Map<const Vec>(water.overlap_velocity.data() + a * D);
         const double rho_a = water.overlap_density[a];
@@ -298,18 +289,15 @@ class SoilWaterSums final : public InteractionEngine {
       threads_used_ = omp_get_num_threads();
       std::vector<double>& acc = partial_[t];
       acc.assign(n_soil * D, 0.0);
+      std::vector<double>& r = pair_r_[t];
       std::vector<double>& w = pair_w_[t];
+      r.resize(max_candidates);
       w.resize(max_candidates);
 #pragma omp for schedule(static)
       for (std::int64_t a = 0; a < n_water; ++a) {
         const std::size_t count = grid_.candidate_count(a);
         const std::int32_t* soil_index = grid_.candidates(a);
-        const Vec x_a = Eigen::Map<const Vec>(water.overlap_position.data() + a * D);
-        for (std::size_t c = 0; c < count; ++c) {
-          Vec dx = x_a - soil_[soil_index[c]].position;
-          box_.minimum_image(dx);
-          w[c] = kernel_.w(dx.norm());
-        }
+        candidate_kernel_values(water, a, r.data(), w.data());
         const double volume_a = water.overlap_mass[a] / water.overlap_density[a];
         const double rate_a = out.water_rate[a];
         Vec on_water = Vec::Zero();
@@ -354,6 +342,24 @@ class SoilWaterSums final : public InteractionEngine {
   }
 
  private:
+  /// Distances r and kernel values w (0 beyond the support) of water particle a's soil
+  /// candidates, in the grid's candidate order.
+  void candidate_kernel_values(const coupling::StepState& water, std::int64_t a, double* r,
+                               double* w) const {
+    const std::size_t count = grid_.candidate_count(a);
+    const std::int32_t* soil_index = grid_.candidates(a);
+    const Vec x_a = Eigen::Map<const Vec>(water.overlap_position.data() + a * D);
+    for (std::size_t c = 0; c < count; ++c) {
+      Vec dx = x_a - soil_[soil_index[c]].position;
+      box_.minimum_image(dx);
+      r[c] = dx.squaredNorm();
+    }
+    for (std::size_t c = 0; c < count; ++c) {  // vectorises: no data-dependent branch
+      r[c] = std::sqrt(r[c]);
+      w[c] = kernel_.w(r[c]);
+    }
+  }
+
   /// The velocity of each overlap particle at the end of the step without the interaction:
   /// update_base + dt update_rate as the solver sent them, else its velocity (a solver that sends
   /// neither: the drag at v^n).

@@ -45,8 +45,8 @@ TEST(ConsolidationCase, CoarseColumnFollowsTerzaghi) {
   EXPECT_NEAR(c.b_model, 0.9091, 1e-4);
   EXPECT_NEAR(c.c_v, 0.046335, 1e-5);
   ASSERT_GE(c.samples.size(), 300u);
-  // Measured at dp = 0.01 m (2026-12-04): U 0.057 (the loaded top row over-compresses by half a
-  // row's strain: O(dp), docs/verification.md), isochrones 0.060 / 0.026 / 0.060 p0, B -1.4 %,
+  // Measured at dp = 0.01 m (2026-12-04): U 0.059 (the loaded top row over-compresses by half a
+  // row's strain, docs/verification.md), isochrones 0.015 / 0.029 / 0.050 p0, B -1.4 %,
   // settlement +3.4 %.
   EXPECT_LE(c.max_degree_error, 0.08);
   for (const auto& iso : c.isochrones) EXPECT_LE(iso.max_error, 0.09) << "T_v " << iso.time_factor;
