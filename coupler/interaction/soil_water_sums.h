@@ -138,6 +138,8 @@ class SoilWaterSums final : public InteractionEngine {
       partial_.resize(max_threads);
       pair_r_.resize(max_threads);
       pair_w_.resize(max_threads);
+      near_soil_.resize(max_threads);
+      near_w_.resize(max_threads);
     }
     const std::size_t max_candidates = grid_.max_candidate_count();
     if (forces) {
@@ -147,6 +149,9 @@ class SoilWaterSums final : public InteractionEngine {
     }
     if (rates) {
       out.water_rate.resize(water.overlap_id.size());
+      near_thread_.resize(water.overlap_id.size());
+      near_begin_.resize(water.overlap_id.size());
+      near_count_.resize(water.overlap_id.size());
     } else {
       out.water_rate.clear();
     }
@@ -167,6 +172,8 @@ class SoilWaterSums final : public InteractionEngine {
       std::vector<double>& w = pair_w_[t];
       r.resize(max_candidates);
       w.resize(max_candidates);
+      near_soil_[t].clear();
+      near_w_[t].clear();
 #pragma omp for schedule(static)
       for (std::int64_t a = 0; a < n_water; ++a) {
         const std::size_t count = grid_.candidate_count(a);
@@ -175,6 +182,7 @@ class SoilWaterSums final : public InteractionEngine {
         std::size_t near = 0;
         for (std::size_t c = 0; c < count; ++c) near += r[c] < support;
         pairs += near;
+        if (rates) remember_pairs(a, t, count, soil_index, w.data());
         const Vec v_a = Eigen::Map<const Vec>(water.overlap_velocity.data() + a * D);
         const double rho_a = water.overlap_density[a];
         const double volume_a = water.overlap_mass[a] / rho_a;
@@ -278,7 +286,6 @@ class SoilWaterSums final : public InteractionEngine {
     predict(water, dt, water_predicted_);
     predict(soil, dt, soil_predicted_);
     const int max_threads = threads();
-    const std::size_t max_candidates = grid_.max_candidate_count();
     double water_force[D] = {};
     threads_used_ = 1;
 #pragma omp parallel reduction(+ : water_force[:D]) if (n_water >= kParallelFrom) \
@@ -289,15 +296,12 @@ class SoilWaterSums final : public InteractionEngine {
       threads_used_ = omp_get_num_threads();
       std::vector<double>& acc = partial_[t];
       acc.assign(n_soil * D, 0.0);
-      std::vector<double>& r = pair_r_[t];
-      std::vector<double>& w = pair_w_[t];
-      r.resize(max_candidates);
-      w.resize(max_candidates);
 #pragma omp for schedule(static)
       for (std::int64_t a = 0; a < n_water; ++a) {
-        const std::size_t count = grid_.candidate_count(a);
-        const std::int32_t* soil_index = grid_.candidates(a);
-        candidate_kernel_values(water, a, r.data(), w.data());
+        // The pairs within the support that compute() found (same order, same kernel values).
+        const std::size_t count = near_count_[a];
+        const std::int32_t* soil_index = near_soil_[near_thread_[a]].data() + near_begin_[a];
+        const double* w = near_w_[near_thread_[a]].data() + near_begin_[a];
         const double volume_a = water.overlap_mass[a] / water.overlap_density[a];
         const double rate_a = out.water_rate[a];
         Vec on_water = Vec::Zero();
@@ -342,6 +346,20 @@ class SoilWaterSums final : public InteractionEngine {
   }
 
  private:
+  /// Keeps water particle a's pairs within the support (soil index, W) in thread t's lists, for
+  /// implicit_drag() after dt is known.
+  void remember_pairs(std::int64_t a, int t, std::size_t count, const std::int32_t* soil_index,
+                      const double* w) {
+    near_thread_[a] = t;
+    near_begin_[a] = near_soil_[t].size();
+    for (std::size_t c = 0; c < count; ++c) {
+      if (!(w[c] > 0.0)) continue;
+      near_soil_[t].push_back(soil_index[c]);
+      near_w_[t].push_back(w[c]);
+    }
+    near_count_[a] = near_soil_[t].size() - near_begin_[a];
+  }
+
   /// Distances r and kernel values w (0 beyond the support) of water particle a's soil
   /// candidates, in the grid's candidate order.
   void candidate_kernel_values(const coupling::StepState& water, std::int64_t a, double* r,
@@ -387,6 +405,12 @@ class SoilWaterSums final : public InteractionEngine {
   std::vector<Vec> water_predicted_, soil_predicted_;  ///< implicit_drag(): v* per particle
   std::vector<std::vector<double>> partial_;  ///< per thread: kStride sums per soil particle
   std::vector<std::vector<double>> pair_r_, pair_w_;  ///< per thread: r, W of one particle's pairs
+  /// compute()'s pairs within the support, for implicit_drag(): per thread the soil index and W of
+  /// its water particles' pairs; per water particle the thread, the first pair and the count.
+  std::vector<std::vector<std::int32_t>> near_soil_;
+  std::vector<std::vector<double>> near_w_;
+  std::vector<int> near_thread_;
+  std::vector<std::size_t> near_begin_, near_count_;
   int threads_used_ = 1;
 };
 
