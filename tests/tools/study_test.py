@@ -97,6 +97,13 @@ class ConvergenceArithmetic(unittest.TestCase):
         orders, _, _, _ = convergence.analyse([0.02, 0.01, 0.005], [0.06, 0.11, 0.15], [0] * 3)
         self.assertAlmostEqual(orders[1], math.log(0.06 / 0.11) / math.log(2.0))
 
+    def test_a_citation_is_no_reference_value(self):
+        import porosph_study  # noqa: E402
+        self.assertEqual(porosph_study.reference_value("0.0096889 m/s (i = 1)"), 0.0096889)
+        self.assertEqual(porosph_study.reference_value(" -2 m/s"), -2.0)
+        self.assertTrue(math.isnan(porosph_study.reference_value("Bui et al. (2008): n/a")))
+        self.assertTrue(math.isnan(porosph_study.reference_value("rho g (H - y)")))
+
     def test_equal_missing_and_exact_errors(self):
         self.assertEqual(convergence.analyse([0.02, 0.01], [0.2, 0.2], [1, 1])[2:],
                          (convergence.NOT_GROWING, True))

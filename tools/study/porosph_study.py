@@ -61,6 +61,14 @@ def numeric_value(text):
     return float(match.group(0)) if match else math.nan
 
 
+def reference_value(text):
+    """A reference that is a measured value: its text starts with the number ('0.0096889 m/s (i =
+    1)' -> 0.0096889); a citation or formula ('Bui et al. (2008)', 'rho g (H - y)') -> nan, so
+    that a year or a coefficient in it is never taken for the reference."""
+    match = re.match(r"\s*([-+]?\d+(\.\d*)?([eE][-+]?\d+)?)", text)
+    return float(match.group(1)) if match else math.nan
+
+
 def numeric_error(text):
     """'1.25 %' -> 1.25, '+0.0040' -> 0.004, '-' -> nan."""
     return abs(numeric_value(text))
@@ -145,7 +153,7 @@ def measure(args, overrides, out, row):
     row["error_value"] = numeric_error(row.get("error", "-"))
     if args.error_from == "value":  # |value - reference|, in the unit of the value
         row["error_value"] = abs(numeric_value(row.get("value", "-"))
-                                 - numeric_value(row.get("reference", "-")))
+                                 - reference_value(row.get("reference", "-")))
     return row["status"] == "completed"
 
 
