@@ -4,6 +4,7 @@
 // keys left out stay out; derived defaults follow the rules in derived_default().
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <stdexcept>
 
 #include "scene/scene_internal.h"
@@ -235,6 +236,10 @@ class Validator {
   void number_in_range(const toml::node& node, const KeySpec& spec, const std::string& key,
                        const std::string& where) const {
     const double v = node.value<double>().value_or(0.0);
+    if (!std::isfinite(v)) {  // TOML allows nan and inf; no key means either (issue 29)
+      errors_.fail(&node, key, where + "must be a finite number, got " + format_number(v));
+      return;
+    }
     const bool below =
         spec.min && (spec.min->inclusive ? v < spec.min->value : v <= spec.min->value);
     const bool above =

@@ -32,6 +32,13 @@ std::vector<ErrorCase> error_cases() {
        "expected a table ([water]), got an integer"},
       {"out of range, open bound", with(c, "dp = 0.01", "dp = -0.1"), "run.dp",
        "dp =", "must be > 0, got -0.1"},
+      // TOML's nan and inf pass every "x < min" test; a non-finite value is an error of its own.
+      {"nan", with(c, "dp = 0.01", "dp = nan"), "run.dp",
+       "dp =", "must be a finite number, got nan"},
+      {"inf", with(c, dt0, dt0 + "\ncfl = inf"), "run.cfl", "cfl",
+       "must be a finite number, got inf"},
+      {"-inf in a vector", with(c, "dp = 0.01", "dp = 0.01\ngravity = [0.0, -inf]"), "run.gravity",
+       "gravity", "component 1: must be a finite number, got -inf"},
       {"out of range, closed interval", with(c, dt0, dt0 + "\nh_factor = 3.5"), "run.h_factor",
        "h_factor", "must be in [1, 3], got 3.5"},
       {"out of range, half-open interval", with(c, dt0, dt0 + "\ncfl = 0"), "run.cfl", "cfl",
