@@ -33,8 +33,6 @@ struct FluidParticles {
   /// 1 / rho and m / rho of every particle, from density and mass at the start of each rate
   /// evaluation (fluid_rates.h), so that the pair loop multiplies instead of dividing.
   std::vector<double> inverse_density, volume;
-  /// The coupler's drag rate lambda [1/s] of this step (set_interaction_rate; implicit drag).
-  std::vector<double> interaction_rate;
 
   std::size_t size() const { return position.size(); }
   std::size_t wall_count() const { return size() - n_free; }

@@ -115,12 +115,10 @@ void FluidSolver<D>::compute_rates() {
 template <int D>
 template <class Kernel>
 void FluidSolver<D>::compute_rates_with(const Kernel& kernel) {
-  const int every = params_.density_filter_every;
-  filtered_this_step_ = every > 0 && step_ > 0 && step_ % static_cast<std::uint64_t>(every) == 0 &&
-                        !damping_.frozen(time_);  // an Euler step (next_step_is_euler)
+  const bool filtered = density_filter_due();  // an Euler step (next_step_is_euler)
   update_water_pressure(params_, particles_);
   update_wall_state(neighbours_, kernel, params_, particles_);
-  if (filtered_this_step_) {  // the filter uses the wall densities; then walls follow the water
+  if (filtered) {  // the filter uses the wall densities; then walls follow the water
     shepard_density_filter(neighbours_, kernel, particles_, filter_scratch_);
     update_water_pressure(params_, particles_);
     update_wall_state(neighbours_, kernel, params_, particles_);
@@ -225,12 +223,6 @@ void FluidSolver<D>::add_interaction(const std::vector<double>& acceleration) {
 }
 
 template <int D>
-void FluidSolver<D>::set_interaction_rate(const std::vector<double>& rate) {
-  sph::scatter_overlap_values(overlap_index_, rate, particles_.size(), particles_.n_free,
-                              particles_.interaction_rate, "set_interaction_rate");
-}
-
-template <int D>
 void FluidSolver<D>::advance(double dt) {
   StopWatch watch(physics_seconds_);
   FluidParticles<D>& P = particles_;
@@ -239,7 +231,6 @@ void FluidSolver<D>::advance(double dt) {
     interaction_nonzero_ = false;
   }
   interaction_fresh_ = false;
-  if (P.interaction_rate.size() != P.size()) P.interaction_rate.assign(P.size(), 0.0);  // none set
   if (!damping_.frozen(time_)) integrate(dt);  // else the water waits (damping_stage.h)
   time_ += dt;
   ++step_;
@@ -247,28 +238,31 @@ void FluidSolver<D>::advance(double dt) {
 }
 
 template <int D>
-bool FluidSolver<D>::next_step_is_euler() const {
+bool FluidSolver<D>::density_filter_due() const {
   const int every = params_.density_filter_every;
-  const bool filtered = every > 0 && step_ > 0 && step_ % static_cast<std::uint64_t>(every) == 0 &&
-                        !damping_.frozen(time_);
+  return every > 0 && step_ > 0 && step_ % static_cast<std::uint64_t>(every) == 0 &&
+         !damping_.frozen(time_);
+}
+
+template <int D>
+bool FluidSolver<D>::next_step_is_euler() const {
   const bool release = damping_.duration() > 0.0 && !damping_.released() && !damping_.frozen(time_);
-  return sph::is_euler_step(step_, params_.euler_every) || filtered || release;
+  return sph::is_euler_step(step_, params_.euler_every) || density_filter_due() || release;
 }
 
 template <int D>
 void FluidSolver<D>::integrate(double dt) {
   FluidParticles<D>& P = particles_;
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
-  const bool release = damping_.release(time_);
-  if (release) {  // end of the damping stage: every water velocity zeroed once
+  // An Euler step also where dt jumps (the short last step of a run): the two Verlet time levels
+  // hold the odd and even chains, and a step much shorter than the last one would hand the
+  // reported velocity over to the other chain. Decided before release() marks the stage over.
+  const bool dt_jump = std::abs(dt - dt_previous_) > 0.01 * dt_previous_;
+  const bool euler = next_step_is_euler() || dt_jump;
+  if (damping_.release(time_)) {  // end of the damping stage: every water velocity zeroed once
     std::fill(P.velocity.begin(), P.velocity.begin() + n, sph::Vec<D>::Zero());
     std::fill(P.velocity_previous.begin(), P.velocity_previous.begin() + n, sph::Vec<D>::Zero());
   }
-  // An Euler step also where dt jumps (the short last step of a run): the two Verlet time levels
-  // hold the odd and even chains, and a step much shorter than the last one would hand the
-  // reported velocity over to the other chain.
-  const bool dt_jump = std::abs(dt - dt_previous_) > 0.01 * dt_previous_;
-  const bool euler = next_step_is_euler() || release || dt_jump;
   zones_.begin_step(time_, dt);
   std::int64_t past_zone = 0;  // zone particles past their downstream face
   const bool shifting = params_.shifting_on() && shifting_.concentration.size() == P.n_free;

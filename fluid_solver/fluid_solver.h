@@ -48,10 +48,6 @@ class FluidSolver {
   /// Adds accelerations (n*D, row-major) to the overlap particles of the last fill_state, same
   /// order. Throws std::invalid_argument on a size mismatch.
   void add_interaction(const std::vector<double>& acceleration);
-  /// The drag rate lambda per overlap particle (implicit drag, sph/integrator.h), in the order of
-  /// the last state's overlap set; empty: none (explicit). Throws std::invalid_argument on a size
-  /// mismatch.
-  void set_interaction_rate(const std::vector<double>& rate);
   /// Modified Verlet step of the free water; prescribed motion of the inflow zones' particles and
   /// renewal of the zones (flow_zones.h); periodic wrap; removal of the water that left the domain
   /// or entered an outflow zone (counted in removed_count); none of this while the damping stage
@@ -102,6 +98,8 @@ class FluidSolver {
   /// Whether the next advance() takes an Euler step of the modified Verlet scheme (the first
   /// step, every euler_every, density-filter steps, the end of the damping stage).
   bool next_step_is_euler() const;
+  /// Whether this step re-initialises the density (water.density_filter_every).
+  bool density_filter_due() const;
   /// True if water particle a left the domain or is a free particle in an outflow zone.
   bool leaves(std::size_t a) const;
   void remove_leaving_particles();
@@ -125,10 +123,9 @@ class FluidSolver {
   std::uint64_t removed_count_ = 0;
   double neighbours_per_particle_ = 0.0;  ///< of the latest neighbour list (free particles)
   std::uint64_t born_count_ = 0;
-  double inflow_mass_ = 0.0;   ///< mass of the particles born in inflow zones so far [kg]
-  double outflow_mass_ = 0.0;  ///< mass of the particles removed so far [kg]
-  std::int64_t next_id_ = 0;   ///< id of the next particle born in an inflow zone
-  bool filtered_this_step_ = false;
+  double inflow_mass_ = 0.0;          ///< mass of the particles born in inflow zones so far [kg]
+  double outflow_mass_ = 0.0;         ///< mass of the particles removed so far [kg]
+  std::int64_t next_id_ = 0;          ///< id of the next particle born in an inflow zone
   double dt_previous_ = 0.0;          ///< the last step's dt: the Verlet span is dt_previous + dt
   bool interaction_fresh_ = false;    ///< add_interaction called since the last advance
   bool interaction_nonzero_ = false;  ///< particles_.interaction may hold non-zero values

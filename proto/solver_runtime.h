@@ -41,14 +41,6 @@ struct has_set_saturation<Solver, std::void_t<decltype(std::declval<Solver&>().s
                                       std::declval<const std::vector<double>&>()))>>
     : std::true_type {};
 
-/// True for a solver with set_interaction_rate(const std::vector<double>&) (implicit drag).
-template <class Solver, class = void>
-struct has_interaction_rate : std::false_type {};
-template <class Solver>
-struct has_interaction_rate<Solver,
-                            std::void_t<decltype(std::declval<Solver&>().set_interaction_rate(
-                                std::declval<const std::vector<double>&>()))>> : std::true_type {};
-
 /// True for a solver with active_terms() (the names reported with the first state).
 template <class Solver, class = void>
 struct has_active_terms : std::false_type {};
@@ -176,8 +168,6 @@ int run_solver_loop(CouplingClient& client, Solver& solver, io::SnapshotWriter& 
       if (!command.interaction_acceleration.empty()) {
         solver.add_interaction(command.interaction_acceleration);
       }
-      if constexpr (has_interaction_rate<Solver>::value)
-        solver.set_interaction_rate(command.interaction_rate);
       if constexpr (has_set_saturation<Solver>::value) solver.set_saturation(command.saturation);
       solver.advance(command.dt);
       if (command.write_checkpoint) {

@@ -14,11 +14,7 @@ void add_flow_zones(SceneSchema& s) {
                       "along `direction`; a particle leaving the box downstream becomes free and a "
                       "new one enters at its upstream end. Give `velocity`, or `flow_rate` with "
                       "`cross_section`."});
-  s.keys.push_back(Key("water.inflow[].min", T::Vector).unit("m").required().doc("Lower corner."));
-  s.keys.push_back(Key("water.inflow[].max", T::Vector)
-                       .unit("m")
-                       .required()
-                       .doc("Upper corner; greater than min in every component."));
+  add_zone_box_keys(s, "water.inflow[]");
   s.keys.push_back(Key("water.inflow[].direction", T::Vector)
                        .required()
                        .doc("Flow direction (normalised by the loader); the zone's upstream end is "
@@ -54,11 +50,7 @@ void add_flow_zones(SceneSchema& s) {
   s.tables.push_back({"water.outflow[]", true, false,
                       "Outflow zones: water particles entering the box are removed (counted in "
                       "run.json and timeseries.csv as removed)."});
-  s.keys.push_back(Key("water.outflow[].min", T::Vector).unit("m").required().doc("Lower corner."));
-  s.keys.push_back(Key("water.outflow[].max", T::Vector)
-                       .unit("m")
-                       .required()
-                       .doc("Upper corner; greater than min in every component."));
+  add_zone_box_keys(s, "water.outflow[]");
   s.keys.push_back(Key("water.outflow[].start_time", T::Float)
                        .unit("s")
                        .fallback("0.0")

@@ -105,6 +105,9 @@ void add_soil_loads(SceneSchema& s);
 /// The region keys every filled block has: shape (box | polygon), min, max, vertices, for the
 /// array table `table` (e.g. "water.blocks[]") (scene_schema_shared.cpp).
 void add_filled_region_keys(SceneSchema& s, const std::string& table);
+/// The required box keys min, max [m] of a zone table (inflow, outflow, load boxes), e.g.
+/// "water.inflow[]" (scene_schema_shared.cpp).
+void add_zone_box_keys(SceneSchema& s, const std::string& table);
 /// [[walls]], [[observables]] (scene_schema_shared.cpp).
 void add_walls_and_observables(SceneSchema& s);
 

@@ -132,6 +132,14 @@ void add_walls_and_observables(SceneSchema& s) {
   add_observables(s);
 }
 
+void add_zone_box_keys(SceneSchema& s, const std::string& table) {
+  s.keys.push_back(Key(table + ".min", T::Vector).unit("m").required().doc("Lower corner."));
+  s.keys.push_back(Key(table + ".max", T::Vector)
+                       .unit("m")
+                       .required()
+                       .doc("Upper corner; greater than min in every component."));
+}
+
 void add_filled_region_keys(SceneSchema& s, const std::string& table) {
   s.keys.push_back(Key(table + ".shape", T::String)
                        .required()

@@ -16,11 +16,7 @@ void add_soil_loads(SceneSchema& s) {
        "carries it for good, as it moves. The total force is the traction times the box's extent "
        "across the traction's axis (2D: per unit thickness), shared equally by those "
        "particles."});
-  s.keys.push_back(Key("soil.loads[].min", T::Vector).unit("m").required().doc("Lower corner."));
-  s.keys.push_back(Key("soil.loads[].max", T::Vector)
-                       .unit("m")
-                       .required()
-                       .doc("Upper corner; greater than min in every component."));
+  add_zone_box_keys(s, "soil.loads[]");
   s.keys.push_back(Key("soil.loads[].traction", T::Vector)
                        .unit("Pa")
                        .required()

@@ -45,8 +45,6 @@ struct SoilParticles {
   /// 1 where R != 0 (some principal stress in tension; update_artificial_stress): pairs of two 0
   /// particles skip the artificial-stress term.
   std::vector<std::uint8_t> in_tension;
-  /// The coupler's drag rate lambda [1/s] of this step (set_interaction_rate; implicit drag).
-  std::vector<double> interaction_rate;
 
   std::size_t size() const { return position.size(); }
 

@@ -262,12 +262,6 @@ void SoilSolver<D>::set_saturation(const std::vector<double>& saturation) {
 }
 
 template <int D>
-void SoilSolver<D>::set_interaction_rate(const std::vector<double>& rate) {
-  sph::scatter_overlap_values(overlap_index_, rate, particles_.size(), particles_.n_free,
-                              particles_.interaction_rate, "set_interaction_rate");
-}
-
-template <int D>
 void SoilSolver<D>::advance(double dt) {
   SoilParticles<D>& P = particles_;
   if (!interaction_fresh_ && interaction_nonzero_) {
@@ -275,7 +269,6 @@ void SoilSolver<D>::advance(double dt) {
     interaction_nonzero_ = false;
   }
   interaction_fresh_ = false;
-  if (P.interaction_rate.size() != P.size()) P.interaction_rate.assign(P.size(), 0.0);  // none set
   const bool damping = time_ < params_.damping_duration;
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
   const double inv_h2 = 1.0 / (params_.h * params_.h);
@@ -286,8 +279,8 @@ void SoilSolver<D>::advance(double dt) {
       const auto& m = params_.materials[P.material[i]];
       a -= params_.damping_coefficient * std::sqrt(m.young * inv_h2 / P.density[i]) * P.velocity[i];
     }
-    // Implicit drag (rate lambda from the coupler, sph/integrator.h): v += dt a / (1 + lambda dt).
-    P.velocity[i] += (dt / (1.0 + dt * P.interaction_rate[i])) * a;
+    // The interaction already holds the coupler's pairwise implicit drag over dt: explicit here.
+    P.velocity[i] += dt * a;
   }
   // Strain rate, spin and drho/dt from the new velocities at the old positions (the neighbour
   // list of this step is still exact), then the stress update.

@@ -54,10 +54,6 @@ class SoilSolver {
   /// Adds accelerations (n*D, row-major) to the overlap particles of the last fill_state (fixed
   /// soil among them ignores its share).
   void add_interaction(const std::vector<double>& acceleration);
-  /// The drag rate lambda per overlap particle (implicit drag, sph/integrator.h), in the order of
-  /// the last state's overlap set; empty: none (explicit). Throws std::invalid_argument on a size
-  /// mismatch.
-  void set_interaction_rate(const std::vector<double>& rate);
   /// The water volume fraction around each overlap particle of the last fill_state (empty: none
   /// near water). A particle at or above coupling.submerged_saturation carries its submerged weight
   /// (stress divergence over rho^s = rho (rho_sat - rho_w) / rho_dry, seed eq. 16); at or above
