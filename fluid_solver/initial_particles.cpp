@@ -71,8 +71,8 @@ InitialParticles<D> initial_particles(const scene::Scene& s, const FluidParams<D
     P.fixed[i] = wall ? 1 : 0;
   }
   if (params.hydrostatic_initial) {
-    hydrostatic_state<D>(P.position.data(), P.n_free, params.gravity, dp, params.eos,
-                         P.pressure.data(), P.density.data());
+    hydrostatic_state<D>(P.position.data(), P.n_free, P.position.data() + P.n_free, P.wall_count(),
+                         params.gravity, dp, params.eos, P.pressure.data(), P.density.data());
   }
   if (s.water->initial_velocity == "taylor_green") {  // inflow-zone particles keep their own
     const TaylorGreenVortex vortex{s.water->taylor_green_speed, s.water->taylor_green_wavelength};

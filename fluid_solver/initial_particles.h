@@ -19,7 +19,8 @@ struct InitialParticles {
 /// zone skipped, points outside the domain or beyond a periodic face dropped), then the lattice of
 /// every inflow zone (zone particles, filled like a block, velocity zones.velocity(z, 0)), then the
 /// wall particles of the walls acting on water (points beyond a periodic axis' range dropped).
-/// Densities: hydrostatic over all the water, zones included (hydrostatic_initial.h), when
+/// Densities: hydrostatic per connected water body, zones included, the walls covering the water
+/// beneath them (hydrostatic_initial.h), when
 /// params.hydrostatic_initial, else rho0; with water.initial_velocity = "taylor_green" the
 /// Taylor-Green velocity and pressure on top (taylor_green_initial.h); masses m = rho(t=0) dp^D;
 /// ids 0..n-1. The arrays are reserved one zone-load ahead for the particles the zones will emit.
