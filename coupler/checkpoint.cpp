@@ -1,13 +1,16 @@
 #include "coupler/checkpoint.h"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 
+#include "coupler/run_directory.h"
 #include "proto/checkpoint_names.h"
 
 namespace porosph::coupler {
@@ -21,12 +24,14 @@ using nlohmann::json;
 void write_atomically(const std::string& path, const std::string& text) {
   const std::string tmp = path + ".tmp";
   {
+    errno = 0;
     std::ofstream file(tmp, std::ios::trunc);
     file << text;
-    if (!file.flush()) throw std::runtime_error("cannot write " + tmp);
+    if (!file.flush())
+      throw std::runtime_error("cannot write " + tmp + ": " + std::strerror(errno));
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    throw std::runtime_error("cannot rename " + tmp + " to " + path);
+    throw std::runtime_error("cannot rename " + tmp + " to " + path + ": " + std::strerror(errno));
   }
 }
 
@@ -49,6 +54,7 @@ std::optional<CheckpointManifest> read_checkpoint_manifest(const std::string& ou
     m.time = in.at("time").get<double>();
     m.step = in.at("step").get<std::uint64_t>();
     m.coupler_file = dir + "/" + in.at("coupler").get<std::string>();
+    m.scene_hash = in.value("scene_hash", std::string());
     for (const auto& [phase, name] : in.at("solvers").items()) {
       m.solvers[phase] = dir + "/" + name.get<std::string>();
     }
@@ -80,10 +86,37 @@ std::optional<CheckpointManifest> load_latest_checkpoint(const std::string& out_
   return manifest;
 }
 
+void check_checkpoint_scene(const std::string& out_dir, const CheckpointManifest& manifest,
+                            const std::string& hash) {
+  const std::string dir = coupling::checkpoint_dir(out_dir);
+  if (!manifest.scene_hash.empty() && manifest.scene_hash != hash) {
+    throw std::runtime_error(dir + "/latest.json names scene hash " + manifest.scene_hash + ", " +
+                             manifest.coupler_file + " holds a scene with hash " + hash +
+                             ": the checkpoint mixes files of two runs");
+  }
+  json record;
+  try {
+    std::ifstream file(out_dir + "/run.json");
+    if (!file) return;  // no run.json to compare with
+    record = json::parse(file);
+  } catch (const std::exception&) {
+    return;  // an unreadable run.json does not stop a resume
+  }
+  const json scene = record.value("scene", json::object());
+  const std::string recorded = scene.is_object() ? scene.value("hash", std::string()) : "";
+  if (!recorded.empty() && recorded != hash) {
+    throw std::runtime_error("the checkpoint in " + dir + " is of another scene than " + out_dir +
+                             "/run.json ('" + scene.value("name", std::string()) + "', hash " +
+                             recorded + "; the checkpoint's: hash " + hash +
+                             "): the directory holds files of two runs");
+  }
+}
+
 CheckpointKeeper::CheckpointKeeper(const scene::Scene& scene, const std::string& out_dir,
                                    std::vector<std::string> phases, std::uint32_t last_index,
                                    double time)
     : dir_(coupling::checkpoint_dir(out_dir)),
+      scene_hash_(scene_hash(scene.resolved_toml)),
       phases_(std::move(phases)),
       interval_(scene.run.checkpoint_interval),
       wall_seconds_(60.0 * scene.run.checkpoint_wall_minutes),
@@ -131,11 +164,9 @@ std::string CheckpointKeeper::complete(const std::map<std::string, coupling::Ste
   for (const std::string& phase : phases_) {
     solvers[phase] = coupling::checkpoint_file_name(phase, index_);
   }
-  const json manifest = {{"index", index_},
-                         {"time", time_},
-                         {"step", step_},
-                         {"coupler", coupler_name},
-                         {"solvers", solvers}};
+  const json manifest = {{"index", index_},    {"time", time_},
+                         {"step", step_},      {"coupler", coupler_name},
+                         {"solvers", solvers}, {"scene_hash", scene_hash_}};
   write_atomically(dir_ + "/latest.json", manifest.dump(2) + "\n");
   // The manifest names the new files now: the previous checkpoint can go.
   if (last_index_ > 0 && last_index_ != index_) {

@@ -31,6 +31,7 @@ struct CheckpointManifest {
   std::uint64_t step = 0;
   std::string coupler_file;                    ///< path of coupler_NNNN.json
   std::map<std::string, std::string> solvers;  ///< phase -> path of <phase>_NNNN.h5
+  std::string scene_hash;  ///< scene_hash() of the run's resolved scene ("" in older manifests)
 };
 
 /// The manifest of `out_dir`'s latest checkpoint, or std::nullopt when there is none. Throws
@@ -42,6 +43,12 @@ std::optional<CheckpointManifest> read_checkpoint_manifest(const std::string& ou
 /// std::runtime_error if the checkpoint is unreadable or incomplete.
 std::optional<CheckpointManifest> load_latest_checkpoint(const std::string& out_dir,
                                                          RunRecord& record, LoopState& loop);
+
+/// Resume: throws std::runtime_error unless the checkpoint belongs to the run in `out_dir`: the
+/// scene of its coupler file (`hash`, scene_hash()) is the one its manifest and OUT/run.json name
+/// (where they name one: files of older versions have no hash).
+void check_checkpoint_scene(const std::string& out_dir, const CheckpointManifest& manifest,
+                            const std::string& hash);
 
 /// The coupler side of checkpointing over one run: schedule (run.checkpoint_interval,
 /// run.checkpoint_wall_minutes, or forced on a signal), the pending checkpoint, and its files.
@@ -78,6 +85,7 @@ class CheckpointKeeper {
  private:
   using Clock = std::chrono::steady_clock;
   std::string dir_;
+  std::string scene_hash_;
   std::vector<std::string> phases_;
   double interval_ = 0, wall_seconds_ = 0;
   double next_time_ = 0;

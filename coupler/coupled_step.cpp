@@ -330,6 +330,7 @@ void CoupledStepLoop::run(ProgressLine& progress) {
       checkpoints_.hold(coupler_state_json(record_, loop_), record_.time, record_.steps);
     }
     progress.update(record_.time, record_.steps, dt);
+    if (heartbeat_) heartbeat_();
   }
   wait_for_goodbyes();
   progress.finish(record_.time, record_.steps);

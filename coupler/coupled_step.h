@@ -38,6 +38,9 @@ class CoupledStepLoop {
                   std::function<int()> interrupt_signal, std::function<void()> write_outputs,
                   const LoopState* resumed = nullptr);
 
+  /// Called once per step (the caller rewrites run.json when its heartbeat is due).
+  void set_heartbeat(std::function<void()> heartbeat) { heartbeat_ = std::move(heartbeat); }
+
   /// Runs to end_time and the solvers' Goodbye. Throws std::runtime_error on any failure.
   void run(ProgressLine& progress);
 
@@ -68,6 +71,7 @@ class CoupledStepLoop {
   std::function<void()> check_alive_;
   std::function<int()> interrupt_signal_;
   std::function<void()> write_outputs_;
+  std::function<void()> heartbeat_;
   int pending_signal_ = 0;   ///< a signal arrived, not yet acted upon
   int stopping_signal_ = 0;  ///< the checkpoint of that signal is under way; then stop
   std::chrono::steady_clock::time_point signal_seen_;

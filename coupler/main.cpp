@@ -1,17 +1,21 @@
 // coupler: the PoroSPH command line (DESIGN.md section 6).
 // clang-format off
-//   coupler run SCENE.toml [--out DIR] [--set key=value ...] [--fluid-solver EXE] [--soil-solver EXE]
+//   coupler run SCENE.toml [--out DIR] [--overwrite] [--set key=value ...] [--fluid-solver EXE] [--soil-solver EXE]
 //   coupler run --attach --endpoint tcp://HOST:PORT SCENE.toml
 //   coupler run --resume DIR          continue DIR's run from its latest checkpoint
+//   coupler status DIR                running / completed / failed / died (docs/reliability.md)
 //   coupler check SCENE.toml [--set ...]     validate only, print the resolved scene
 //   coupler schema --markdown                the scene key reference (docs/scene.md)
 // clang-format on
-// Exit codes: 0 completed, 1 the run failed, 2 bad input.
+// Exit codes of run: 0 completed, 1 the run failed, 2 bad input (a busy or unwritable run
+// directory, or one holding an earlier run without --overwrite, included). Of status: 0 completed,
+// 1 failed, 2 no run there, 3 running, 4 died.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <iostream>
 
 #include "coupler/run_session.h"
+#include "coupler/run_status.h"
 #include "scene/scene_loader.h"
 
 namespace {
@@ -44,6 +48,9 @@ int main(int argc, char** argv) {
                   "continue the run in this directory from its latest checkpoint "
                   "(docs/checkpoints.md)");
   run->add_option("--out", run_options.out_dir, "run directory (default runs/<scene name>)");
+  run->add_flag("--overwrite", run_options.overwrite,
+                "replace the outputs of an earlier run in the run directory (without it such a "
+                "directory is refused)");
   run->add_option("--set", run_options.overrides, "override a scene key: key=value (repeatable)")
       ->take_all()
       ->allow_extra_args(false);
@@ -60,6 +67,11 @@ int main(int argc, char** argv) {
   auto* check = app.add_subcommand("check", "validate a scene and print it resolved");
   check->add_option("scene", check_path, "scene file (TOML)")->required();
   check->add_option("--set", check_overrides, "override a scene key: key=value (repeatable)");
+
+  std::string status_dir;
+  auto* status = app.add_subcommand(
+      "status", "say whether the run in a directory is running, completed, failed or died");
+  status->add_option("dir", status_dir, "run directory")->required();
 
   bool markdown = false;
   auto* schema = app.add_subcommand("schema", "print the reference of every scene key");
@@ -79,10 +91,10 @@ int main(int argc, char** argv) {
     }
     if (!run_options.resume_dir.empty() &&
         (!run_options.scene_path.empty() || !run_options.out_dir.empty() ||
-         !run_options.overrides.empty())) {
+         !run_options.overrides.empty() || run_options.overwrite)) {
       std::fprintf(stderr,
                    "coupler: --resume DIR takes the scene and the run directory from DIR's "
-                   "checkpoint: give no scene, --out or --set with it\n");
+                   "checkpoint: give no scene, --out, --set or --overwrite with it\n");
       return porosph::coupler::kBadInput;
     }
     if (run_options.attach && run_options.endpoint.empty()) {
@@ -93,6 +105,11 @@ int main(int argc, char** argv) {
     return porosph::coupler::run_scene(run_options);
   }
   if (*check) return check_scene(check_path, check_overrides);
+  if (*status) {
+    const auto report = porosph::coupler::run_status(status_dir);
+    std::cout << report.text << "\n";
+    return report.code;
+  }
   if (*schema) {
     std::cout << porosph::scene::scene_reference_markdown();
     return 0;

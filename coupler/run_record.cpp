@@ -3,12 +3,17 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
+
+#include "coupler/run_directory.h"
 
 namespace porosph::coupler {
 
@@ -174,7 +179,9 @@ void write_run_json(const std::string& path, const RunRecord& r) {
   json out;
   out["status"] = r.status;
   out["message"] = r.message;
-  out["scene"] = {{"name", r.scene_name}, {"path", r.scene_path}};
+  out["scene"] = {
+      {"name", r.scene_name}, {"path", r.scene_path}, {"hash", scene_hash(r.resolved_toml)}};
+  out["coupler"] = {{"pid", r.coupler_pid}, {"host", r.coupler_host}, {"heartbeat_utc", utc_now()}};
   out["parameters"] = resolved_scene_json(r.resolved_toml);
   out["dimension"] = r.dimension;
   out["steps"] = r.steps;
@@ -224,15 +231,38 @@ void write_run_json(const std::string& path, const RunRecord& r) {
                                                      {"step", r.checkpoint_step}};
 
   const std::string tmp = path + ".tmp";
+  const auto fail = [&](const std::string& what) {
+    const std::string reason = std::strerror(errno);
+    std::remove(tmp.c_str());  // no half-written run.json.tmp left behind
+    throw std::runtime_error("cannot " + what + ": " + reason);
+  };
   {
-    std::ofstream file(tmp);
-    if (!file) throw std::runtime_error("cannot write " + tmp);
+    errno = 0;
+    std::ofstream file(tmp, std::ios::trunc);
+    if (!file) fail("create " + tmp);
     file << out.dump(2) << "\n";
-    if (!file) throw std::runtime_error("cannot write " + tmp);
+    file.close();
+    if (!file) fail("write " + tmp);
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    throw std::runtime_error("cannot rename " + tmp + " to " + path);
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) fail("rename " + tmp + " to " + path);
+}
+
+std::vector<io::XdmfPhaseSeries> xdmf_series(const RunRecord& record, const std::string& out_dir,
+                                             std::set<std::string>& phases_without_h5) {
+  std::vector<io::XdmfPhaseSeries> series;
+  for (const auto& [phase, phase_record] : record.phases) {
+    if (phase_record.snapshots.empty()) continue;
+    if (!std::filesystem::exists(std::filesystem::path(out_dir) / phase_record.h5_file)) {
+      if (phases_without_h5.insert(phase).second) {
+        std::fprintf(stderr, "coupler: the %s solver wrote no %s; run.xdmf leaves that phase out\n",
+                     phase.c_str(), phase_record.h5_file.c_str());
+      }
+      continue;
+    }
+    series.push_back({phase, phase_record.h5_file, record.dimension,
+                      snapshot_fields_of_phase(phase, record.dimension), phase_record.snapshots});
   }
+  return series;
 }
 
 std::vector<io::XdmfField> snapshot_fields_of_phase(const std::string& phase, int dimension) {

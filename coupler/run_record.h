@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -123,6 +124,10 @@ struct RunRecord {
   std::uint32_t checkpoint_index = 0;
   double checkpoint_time = 0;
   std::uint64_t checkpoint_step = 0;
+  /// The coupler process of this session (run.json "coupler": pid, host, and the heartbeat: the
+  /// UTC time of each rewrite), so that a reader can tell a live run from a dead one.
+  std::int64_t coupler_pid = 0;
+  std::string coupler_host;
 
   /// Books one step's dt and the smallest of that step's limits (solvers' CFL, viscous, eq. 21
   /// and the interaction's eq. 21).
@@ -139,8 +144,15 @@ struct RunRecord {
   double wall_seconds_before_segment_ = 0;
 };
 
-/// Writes run.json (atomically: temp file + rename).
+/// Writes run.json (atomically: temp file + rename; "coupler.heartbeat_utc" the time of writing).
+/// Throws std::runtime_error naming the file and the system's reason.
 void write_run_json(const std::string& path, const RunRecord& record);
+
+/// run.xdmf's content: every phase with snapshots whose HDF5 file exists in `out_dir` (a solver
+/// need not write one, docs/solver-protocol.md: its phase is left out, with a note on stderr the
+/// first time, remembered in `phases_without_h5`).
+std::vector<io::XdmfPhaseSeries> xdmf_series(const RunRecord& record, const std::string& out_dir,
+                                             std::set<std::string>& phases_without_h5);
 
 /// The fields each built-in phase writes besides position (DESIGN.md section 6).
 std::vector<io::XdmfField> snapshot_fields_of_phase(const std::string& phase, int dimension);

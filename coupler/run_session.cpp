@@ -19,6 +19,7 @@
 #include "coupler/checkpoint.h"
 #include "coupler/coupled_step.h"
 #include "coupler/progress_line.h"
+#include "coupler/run_directory.h"
 #include "coupler/run_record.h"
 #include "coupler/solver_hub.h"
 #include "coupler/solver_launch.h"
@@ -78,8 +79,15 @@ class RunSession {
   void check_solvers_alive();
   void shut_down_after_failure(const std::string& reason);
   void write_outputs();
+  /// Rewrites run.json (its heartbeat with it).
+  void write_record();
+
+  /// run.json is rewritten at least this often while a run goes on (its heartbeat).
+  static constexpr double kHeartbeatSeconds = 30.0;
 
   RunOptions options_;
+  std::unique_ptr<RunDirectoryLock> lock_;  ///< held for the session's life
+  Clock::time_point last_record_write_ = Clock::now();
   scene::Scene scene_;
   RunRecord record_;  ///< its wall clock starts with the session
   std::string out_dir_;
@@ -91,15 +99,13 @@ class RunSession {
 
 void RunSession::prepare_output_dir() {
   out_dir_ = options_.out_dir.empty() ? "runs/" + scene_.name : options_.out_dir;
-  std::error_code error;
-  fs::create_directories(out_dir_, error);
-  if (error)
-    throw BadInput("cannot create output directory '" + out_dir_ + "': " + error.message());
   out_dir_ = fs::absolute(out_dir_).lexically_normal().string();
-  for (const char* stale : {"run.json", "timeseries.csv", "run.xdmf", "fluid.h5", "soil.h5"}) {
-    fs::remove(fs::path(out_dir_) / stale, error);
+  if (out_dir_.size() > 1 && out_dir_.back() == '/') out_dir_.pop_back();
+  try {
+    lock_ = claim_run_directory(out_dir_, options_.overwrite);
+  } catch (const RunDirectoryError& e) {
+    throw BadInput(e.what());
   }
-  fs::remove_all(fs::path(out_dir_) / "checkpoint", error);  // never resume into another run
 }
 
 void RunSession::load_fresh_run() {
@@ -123,6 +129,11 @@ void RunSession::load_resume_point() {
     throw BadInput("cannot resume: '" + options_.resume_dir + "' is not a run directory");
   }
   out_dir_ = fs::absolute(options_.resume_dir).lexically_normal().string();
+  try {
+    lock_ = std::make_unique<RunDirectoryLock>(out_dir_);
+  } catch (const RunDirectoryError& e) {
+    throw BadInput(std::string("cannot resume: ") + e.what());
+  }
   LoopState loop;
   std::optional<CheckpointManifest> manifest;
   try {
@@ -137,9 +148,12 @@ void RunSession::load_resume_point() {
                    "run.checkpoint_wall_minutes or a SIGINT/SIGTERM past t = 0)");
   }
   try {
+    check_checkpoint_scene(out_dir_, *manifest, scene_hash(record_.resolved_toml));
     scene_ = scene::load_scene_text(record_.resolved_toml, manifest->coupler_file);
   } catch (const scene::SceneError& e) {
     throw BadInput(std::string("cannot resume: bad scene in the checkpoint: ") + e.what());
+  } catch (const std::runtime_error& e) {
+    throw BadInput(std::string("cannot resume: ") + e.what());
   }
   for (const std::string& phase : scene_.phases()) {
     if (!manifest->solvers.count(phase)) {
@@ -295,24 +309,16 @@ void RunSession::shut_down_after_failure(const std::string& reason) {
 }
 
 void RunSession::write_outputs() {
-  record_.update_wall_seconds();
-  std::vector<io::XdmfPhaseSeries> series;
-  for (const auto& [phase, phase_record] : record_.phases) {
-    if (phase_record.snapshots.empty()) continue;
-    // A solver need not write snapshots (docs/solver-protocol.md): run.xdmf then leaves its phase
-    // out rather than point ParaView at a missing file.
-    if (!fs::exists(fs::path(out_dir_) / phase_record.h5_file)) {
-      if (phases_without_h5_.insert(phase).second) {
-        std::fprintf(stderr, "coupler: the %s solver wrote no %s; run.xdmf leaves that phase out\n",
-                     phase.c_str(), phase_record.h5_file.c_str());
-      }
-      continue;
-    }
-    series.push_back({phase, phase_record.h5_file, record_.dimension,
-                      snapshot_fields_of_phase(phase, record_.dimension), phase_record.snapshots});
-  }
+  const std::vector<io::XdmfPhaseSeries> series =
+      xdmf_series(record_, out_dir_, phases_without_h5_);
   if (!series.empty()) io::write_xdmf(out_dir_ + "/run.xdmf", series);
+  write_record();
+}
+
+void RunSession::write_record() {
+  record_.update_wall_seconds();
   write_run_json(out_dir_ + "/run.json", record_);
+  last_record_write_ = Clock::now();
 }
 
 int RunSession::run() {
@@ -328,15 +334,21 @@ int RunSession::run() {
   }
   std::signal(SIGINT, on_interrupt);
   std::signal(SIGTERM, on_interrupt);
+  record_.coupler_pid = getpid();
+  record_.coupler_host = host_name();
   int exit_code = kCompleted;
   try {
     start_solvers();
+    write_record();  // status "running" with the coupler's pid and host from the start
     handshake();
     if (resumed_) write_outputs();  // run.xdmf lists the snapshots the checkpoint keeps
     CoupledStepLoop loop(
         scene_, *hub_, record_, out_dir_, [this] { check_solvers_alive(); },
         [] { return interrupt_signal.exchange(0); }, [this] { write_outputs(); },
         resumed_ ? &*resumed_ : nullptr);
+    loop.set_heartbeat([this] {
+      if (seconds_since(last_record_write_) >= kHeartbeatSeconds) write_record();
+    });
     ProgressLine progress(scene_.run.end_time, options_.progress);
     loop.run(progress);
     record_.status = "completed";

@@ -18,13 +18,17 @@ struct RunOptions {
   /// `coupler run --resume DIR`: continue the run in DIR from its latest checkpoint (scene_path,
   /// out_dir and overrides unused: the scene is the one the checkpoint keeps).
   std::string resume_dir;
+  /// --overwrite: a fresh run may replace the outputs of an earlier run in its directory (without
+  /// it such a directory is refused, docs/reliability.md).
+  bool overwrite = false;
 };
 
 /// Exit codes of the contract (DESIGN.md section 6).
 enum ExitCode { kCompleted = 0, kRunFailed = 1, kBadInput = 2 };
 
 /// Runs the scene (or resumes a run, RunOptions::resume_dir; docs/checkpoints.md); never throws.
-/// Writes OUT/run.json in every case where OUT could be created.
+/// Holds OUT's lock (coupler/run_directory.h) for the run's life, and writes OUT/run.json in every
+/// case where OUT could be locked (a failure to write it: the reason on stderr, exit code 1).
 int run_scene(const RunOptions& options);
 
 }  // namespace porosph::coupler

@@ -1,8 +1,10 @@
 #include "io/xdmf_writer.h"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -148,19 +150,22 @@ void write_xdmf(const std::string& path, const std::vector<XdmfPhaseSeries>& pha
       << "</Xdmf>\n";
 
   const std::string temporary = path + ".tmp";
+  // Every failure names the file and the system's reason (errno), and leaves no temporary file.
+  const auto fail = [&](const std::string& what) {
+    const std::string reason = std::strerror(errno);
+    std::remove(temporary.c_str());
+    throw std::runtime_error("write_xdmf: cannot " + what + ": " + reason);
+  };
   {
+    errno = 0;
     std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-    if (!file) throw std::runtime_error("write_xdmf: cannot create '" + temporary + "'");
+    if (!file) fail("create '" + temporary + "'");
     file << out.str();
     file.close();
-    if (!file) {
-      std::remove(temporary.c_str());
-      throw std::runtime_error("write_xdmf: cannot write '" + temporary + "'");
-    }
+    if (!file) fail("write '" + temporary + "'");
   }
   if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw std::runtime_error("write_xdmf: cannot rename '" + temporary + "' to '" + path + "'");
+    fail("rename '" + temporary + "' to '" + path + "'");
   }
 }
 

@@ -54,7 +54,12 @@ int solver_process_main(int argc, char** argv, const SolverProgram& program) {
   } catch (const CouplingError& e) {
     std::fprintf(stderr, "%s: %s\n", program.program, e.what());
     return 1;
-  } catch (const std::exception& e) {
+  } catch (const SolverFailure& e) {
+    std::fprintf(stderr, "%s: failed at step %llu, t = %.9g s: %s\n", program.program,
+                 static_cast<unsigned long long>(e.step), e.time, e.what());
+    if (client) client->report_error(e.what(), e.step, e.time);
+    return 1;
+  } catch (const std::exception& e) {  // before the step loop: step 0, t = 0
     std::fprintf(stderr, "%s: %s\n", program.program, e.what());
     if (client) client->report_error(e.what(), 0, 0.0);
     return 1;

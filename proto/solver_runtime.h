@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -83,11 +84,35 @@ void restore_solver_checkpoint(const SetupData& setup, Solver& solver,
   in.read("overlap_max", overlap_max.data());
 }
 
+/// A failure inside the step loop (a snapshot or checkpoint that cannot be written, ...), with the
+/// solver's step and time when it happened: what solver_main.h reports to the coupler.
+struct SolverFailure : std::runtime_error {
+  SolverFailure(const std::string& what, std::uint64_t failed_step, double failed_time)
+      : std::runtime_error(what), step(failed_step), time(failed_time) {}
+  std::uint64_t step;
+  double time;
+};
+
+template <class Solver>
+int run_solver_loop_unguarded(CouplingClient& client, Solver& solver, io::SnapshotWriter& writer);
+
 /// Runs the coupled step loop until the coupler says stop. Returns the process exit code (0 when
 /// the coupler stopped the run normally, 1 when this solver failed - it has then told the coupler
-/// why).
+/// why). Throws CouplingError when the coupler is gone, SolverFailure (the step and time of the
+/// solver) on any other failure.
 template <class Solver>
 int run_solver_loop(CouplingClient& client, Solver& solver, io::SnapshotWriter& writer) {
+  try {
+    return run_solver_loop_unguarded(client, solver, writer);
+  } catch (const CouplingError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw SolverFailure(e.what(), solver.step(), solver.time());
+  }
+}
+
+template <class Solver>
+int run_solver_loop_unguarded(CouplingClient& client, Solver& solver, io::SnapshotWriter& writer) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   double physics_seconds = 0.0;
