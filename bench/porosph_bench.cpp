@@ -169,8 +169,8 @@ int main(int argc, char** argv) {
   }
   const std::string command =
       (threads > 0 ? "OMP_NUM_THREADS=" + std::to_string(threads) + " " : "") + executable_dir() +
-      "/coupler run " + POROSPH_SOURCE_DIR + "/cases/" + case_name + "/scene.toml --out " + out +
-      settings;
+      "/coupler run " + POROSPH_SOURCE_DIR + "/cases/" + case_name +
+      "/scene.toml --overwrite --out " + out + settings;
   std::printf("# %s\n", command.c_str());
   std::vector<double> rates, overheads;
   nlohmann::json run;

@@ -80,6 +80,13 @@ TEST(RunOwnership, ASecondRunIntoABusyDirectoryExitsTwoNamingTheFirst) {
   EXPECT_NE(second.output.find("pid " + std::to_string(first)), std::string::npos) << second.output;
   EXPECT_EQ(read_json(out + "/run.json").at("coupler").at("pid").get<pid_t>(), first)
       << "the refused run touched the first one's run.json";
+  // Nor does a resume.
+  const auto resume =
+      run_process({bin("coupler"), "run", "--resume", out, "--no-progress"}, dir + "/resume.txt");
+  EXPECT_EQ(resume.exit_code, 2) << resume.output;
+  EXPECT_NE(resume.output.find("cannot resume: the run directory '" + out + "' is in use"),
+            std::string::npos)
+      << resume.output;
   // --overwrite does not take a directory from a live run either.
   const auto forced = run_process(dummy_run(scene, out, "", {"--overwrite"}), dir + "/forced.txt");
   EXPECT_EQ(forced.exit_code, 2) << forced.output;

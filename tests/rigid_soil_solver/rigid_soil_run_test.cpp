@@ -82,8 +82,10 @@ CaseRun run_scene(const std::string& scene, std::vector<std::string> extra) {
   CaseRun run;
   const std::string dir = std::filesystem::path(scene).parent_path().string();
   run.out = dir + "/out";
-  std::vector<std::string> argv = {bin("coupler"), "run",           scene,   "--out",
-                                   run.out,        "--no-progress", "--set", "run.max_steps=20"};
+  // --overwrite: a test may run the same scene directory twice.
+  std::vector<std::string> argv = {bin("coupler"),  "run",   scene,
+                                   "--out",         run.out, "--overwrite",
+                                   "--no-progress", "--set", "run.max_steps=20"};
   argv.insert(argv.end(), extra.begin(), extra.end());
   run.result = run_process(argv, dir + "/log.txt", 120);
   if (std::filesystem::exists(run.out + "/run.json")) run.record = read_json(run.out + "/run.json");

@@ -90,7 +90,7 @@ def run_variant(args, overrides, out):
                 if run.get("status") != "running":  # not one still running or killed
                     return run
     command = [os.path.join(args.bin, "coupler"), "run", args.scene, "--out", out,
-               "--no-progress"]
+               "--overwrite", "--no-progress"]  # a variant whose earlier run did not match
     for o in overrides:
         command += ["--set", o]
     print("porosph_study: " + " ".join(command), flush=True)

@@ -156,7 +156,7 @@ def readable_copy(out, scratch):
 def run_case(c, args):
     out = run_path(c, args)
     command = [os.path.join(args.bin, "coupler"), "run", os.path.join(ROOT, c["scene"]),
-               "--out", out]
+               "--out", out, "--overwrite"]  # a rerun replaces the missing or stale run
     for o in c["overrides"]:
         command += ["--set", o]
     print("running:", " ".join(command), flush=True)
