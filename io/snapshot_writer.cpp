@@ -101,6 +101,11 @@ FieldView field_view(const std::string& name, const std::vector<std::uint8_t>& v
   return view;
 }
 
+/// Where a snapshot is written until it is complete; then it is moved (renamed) into /snapshots,
+/// so that a reader never sees a half-written snapshot there. A failed write deletes it; a
+/// leftover of a killed process is deleted by the next writer.
+constexpr const char* kPartialGroup = "/partial_snapshot";
+
 struct SnapshotWriter::Impl {
   std::string path;
   Hdf5Id file;
@@ -133,6 +138,10 @@ SnapshotWriter::SnapshotWriter(const std::string& path, std::uint32_t first_drop
     Hdf5Id group(H5Gcreate2(file, "/snapshots", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
                  where);
   }
+  if (H5Lexists(file, kPartialGroup, H5P_DEFAULT) > 0) {
+    check_hdf5(H5Ldelete(file, kPartialGroup, H5P_DEFAULT),
+               where + ": cannot delete " + std::string(kPartialGroup));
+  }
   // Groups are named by their zero-padded index: probe upwards from first_dropped until a gap of
   // indices no writer leaves (outputs are consecutive).
   for (std::uint32_t index = first_dropped;; ++index) {
@@ -147,26 +156,13 @@ SnapshotWriter::~SnapshotWriter() = default;  // Hdf5Id closes the file (errors 
 
 const std::string& SnapshotWriter::path() const { return impl_->path; }
 
-void SnapshotWriter::write(std::uint32_t index, double time, const std::vector<FieldView>& fields) {
-  const std::string group_name = snapshot_group(index);
-  const std::string where = "SnapshotWriter('" + impl_->path + "') " + group_name;
+namespace {
 
-  std::vector<FieldType> types;
-  std::set<std::string> names;
-  for (const FieldView& field : fields) {
-    types.push_back(checked_type(field, where + "/" + field.name));
-    if (!names.insert(field.name).second) {
-      throw std::runtime_error(where + ": field '" + field.name + "' given twice");
-    }
-  }
-
-  Hdf5ErrorSilencer silence;
-  const hid_t file = impl_->file.get();
-  if (H5Lexists(file, group_name.c_str(), H5P_DEFAULT) > 0) {
-    throw std::runtime_error(where + ": snapshot " + std::to_string(index) + " already written");
-  }
-  Hdf5Id group(H5Gcreate2(file, group_name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-               H5Gclose, where + ": cannot create group");
+/// Writes a snapshot into kPartialGroup.
+void write_partial_group(hid_t file, double time, const std::vector<FieldView>& fields,
+                         const std::vector<FieldType>& types, const std::string& where) {
+  Hdf5Id group(H5Gcreate2(file, kPartialGroup, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+               where + ": cannot create group");
   {
     Hdf5Id scalar(H5Screate(H5S_SCALAR), H5Sclose, where + ": attribute `time`");
     Hdf5Id attribute(
@@ -194,6 +190,37 @@ void SnapshotWriter::write(std::uint32_t index, double time, const std::vector<F
     dataset.close(field_where + ": cannot close dataset");
   }
   group.close(where + ": cannot close group");
+}
+
+}  // namespace
+
+void SnapshotWriter::write(std::uint32_t index, double time, const std::vector<FieldView>& fields) {
+  const std::string group_name = snapshot_group(index);
+  const std::string where = "SnapshotWriter('" + impl_->path + "') " + group_name;
+
+  std::vector<FieldType> types;
+  std::set<std::string> names;
+  for (const FieldView& field : fields) {
+    types.push_back(checked_type(field, where + "/" + field.name));
+    if (!names.insert(field.name).second) {
+      throw std::runtime_error(where + ": field '" + field.name + "' given twice");
+    }
+  }
+
+  Hdf5ErrorSilencer silence;
+  const hid_t file = impl_->file.get();
+  if (H5Lexists(file, group_name.c_str(), H5P_DEFAULT) > 0) {
+    throw std::runtime_error(where + ": snapshot " + std::to_string(index) + " already written");
+  }
+  if (H5Lexists(file, kPartialGroup, H5P_DEFAULT) > 0) H5Ldelete(file, kPartialGroup, H5P_DEFAULT);
+  try {
+    write_partial_group(file, time, fields, types, where);
+    check_hdf5(H5Lmove(file, kPartialGroup, file, group_name.c_str(), H5P_DEFAULT, H5P_DEFAULT),
+               where + ": cannot move the complete snapshot into place");
+  } catch (...) {
+    H5Ldelete(file, kPartialGroup, H5P_DEFAULT);  // best effort: no half snapshot stays
+    throw;
+  }
   check_hdf5(H5Fflush(file, H5F_SCOPE_LOCAL), where + ": cannot flush file");
 }
 

@@ -270,5 +270,31 @@ TEST(SnapshotWriter, SnapshotsSurviveAProcessThatDiesWithoutClosingTheFile) {
   expect_round_trip(reader, 1, sample);
 }
 
+// A write that fails half-way (here: HDF5 refuses the second dataset's name) leaves no half
+// snapshot in /snapshots nor anywhere else, and the index can be written again (issue 29).
+TEST(SnapshotWriter, AWriteThatFailsHalfWayLeavesNoHalfSnapshot) {
+  ScratchDir dir;
+  const std::string path = dir.file("fluid.h5");
+  const std::vector<double> values = {1, 2, 3};
+  {
+    SnapshotWriter writer(path);
+    writer.write(0, 0.0, {field_view("density", values)});
+    const std::string message = error_of([&] {
+      writer.write(1, 0.5, {field_view("density", values), field_view(".", values)});
+    });
+    EXPECT_NE(message.find("/snapshots/000001/."), std::string::npos) << message;
+    SnapshotReader reader(path);
+    ASSERT_EQ(reader.snapshots().size(), 1u) << "a half snapshot is visible";
+    writer.write(1, 0.5, {field_view("density", values)});
+  }
+  SnapshotReader reader(path);
+  ASSERT_EQ(reader.snapshots().size(), 2u);
+  EXPECT_EQ(reader.snapshots()[1].time, 0.5);
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  EXPECT_LE(H5Lexists(file, "/partial_snapshot", H5P_DEFAULT), 0);
+  H5Fclose(file);
+}
+
 }  // namespace
 }  // namespace porosph::io

@@ -207,6 +207,9 @@ TEST(WriteXdmf, InvalidInputThrowsAndKeepsThePreviousFile) {
     ADD_FAILURE() << "no exception";
   } catch (const std::runtime_error& error) {
     EXPECT_NE(std::string(error.what()).find(unwritable), std::string::npos) << error.what();
+    // ... and the system's reason (issue 29: "the xdmf error gives no reason").
+    EXPECT_NE(std::string(error.what()).find("No such file or directory"), std::string::npos)
+        << error.what();
   }
 }
 
