@@ -132,6 +132,9 @@ void CoupledStepLoop::collect_states() {
         break;
     }
   }
+  // A started solver that is gone fails the run even while messages keep coming (the wait above
+  // looks only when the wire falls silent).
+  check_alive_();
 }
 
 void CoupledStepLoop::absorb_state(const std::string& phase, coupling::StepState& state) {

@@ -219,6 +219,7 @@ void write_run_json(const std::string& path, const RunRecord& r) {
   out["transport"] = {
       {"bytes_received", r.transport_bytes_received},
       {"bytes_sent", r.transport_bytes_sent},
+      {"dropped_messages", r.dropped_messages},
       {"bytes_per_step",
        number(static_cast<double>(r.transport_bytes_received + r.transport_bytes_sent) / steps)}};
   json observables = json::object();

@@ -120,6 +120,9 @@ struct RunRecord {
   /// Payload bytes of the messages of the step loop (states, errors, goodbyes received; commands
   /// sent), without ZeroMQ's framing: the coupling's data volume.
   std::uint64_t transport_bytes_received = 0, transport_bytes_sent = 0;
+  /// Messages the coupler dropped in this session (no or a wrong run token, a sender that is no
+  /// phase's solver; docs/protocol.md): run.json "transport.dropped_messages".
+  std::uint64_t dropped_messages = 0;
   /// The latest checkpoint: index (0: none yet), simulated time and step.
   std::uint32_t checkpoint_index = 0;
   double checkpoint_time = 0;

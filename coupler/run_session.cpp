@@ -53,14 +53,6 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-std::string fresh_ipc_endpoint() {
-  static std::atomic<int> counter{0};
-  std::ostringstream path;
-  path << "ipc://" << fs::temp_directory_path().string() << "/porosph-" << getpid() << "-"
-       << counter++ << ".ipc";
-  return path.str();
-}
-
 class RunSession {
  public:
   explicit RunSession(const RunOptions& options) : options_(options) {}
@@ -91,6 +83,7 @@ class RunSession {
   scene::Scene scene_;
   RunRecord record_;  ///< its wall clock starts with the session
   std::string out_dir_;
+  std::unique_ptr<PrivateSocketDir> socket_dir_;  ///< the default socket's; outlives hub_
   std::unique_ptr<SolverHub> hub_;
   std::map<std::string, std::unique_ptr<SolverProcess>> processes_;
   std::optional<LoopState> resumed_;         ///< set when resuming
@@ -171,14 +164,18 @@ void RunSession::load_resume_point() {
 }
 
 void RunSession::start_solvers() {
-  const std::string endpoint = options_.endpoint.empty() ? fresh_ipc_endpoint() : options_.endpoint;
-  hub_ = std::make_unique<SolverHub>(endpoint);
+  try {
+    hub_ = open_solver_hub(options_.endpoint, scene_, socket_dir_);
+  } catch (const BadEndpoint& e) {
+    if (options_.endpoint.empty()) throw RunFailure(e.what());
+    throw BadInput(e.what());  // the user's --endpoint
+  }
   const std::string connect = hub_->connect_endpoint();
   if (options_.attach) {
-    std::string phases;
-    for (const std::string& phase : scene_.phases()) phases += (phases.empty() ? "" : ", ") + phase;
-    std::fprintf(stderr, "coupler: waiting for solvers (%s) at %s\n", phases.c_str(),
-                 connect.c_str());
+    std::fputs(
+        attach_instructions(scene_.phases(), connect, hub_->run_token(), hub_->listens_everywhere())
+            .c_str(),
+        stderr);
     return;
   }
   for (const std::string& phase : scene_.phases()) {
@@ -204,7 +201,8 @@ void RunSession::start_solvers() {
     try {
       processes_[phase] = std::make_unique<SolverProcess>(
           executable, args,
-          solver_environment(connect, static_cast<unsigned>(scene_.phases().size())));
+          solver_environment(connect, hub_->run_token(),
+                             static_cast<unsigned>(scene_.phases().size())));
     } catch (const std::exception& e) {
       if (user_named) throw BadInput(e.what());
       throw RunFailure(e.what());
@@ -267,7 +265,7 @@ void RunSession::handshake() {
     phase_record.phase = in.phase;
     phase_record.solver_name = in.solver_name;
     phase_record.solver_version = in.solver_version;
-    phase_record.pid = in.pid;
+    if (!processes_.count(in.phase)) phase_record.pid = in.pid;  // else the pid it was started as
     phase_record.h5_file = h5_file_of_phase(in.phase);
     greeted[in.phase] = true;
   }
@@ -309,6 +307,7 @@ void RunSession::shut_down_after_failure(const std::string& reason) {
 }
 
 void RunSession::write_outputs() {
+  if (hub_) record_.dropped_messages = hub_->dropped_messages();
   const std::vector<io::XdmfPhaseSeries> series =
       xdmf_series(record_, out_dir_, phases_without_h5_);
   if (!series.empty()) io::write_xdmf(out_dir_ + "/run.xdmf", series);

@@ -2,6 +2,7 @@
 // id][Envelope].
 #include "coupler/solver_hub.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -14,10 +15,13 @@
 #include <utility>
 #include <zmq.hpp>
 
+#include "coupler/dropped_messages.h"
+#include "coupler/run_token.h"
 #include "proto/porosph.pb.h"
 #include "proto/wire_convert.h"
 #include "proto/wire_frames.h"
 #include "proto/wire_message.h"
+#include "proto/wire_token.h"
 
 namespace porosph::coupler {
 namespace {
@@ -31,16 +35,6 @@ constexpr int kSendTimeoutMilliseconds = 10000;
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-/// "tcp://0.0.0.0:PORT" / "tcp://*:PORT" -> "tcp://127.0.0.1:PORT"; other endpoints unchanged.
-std::string connectable(std::string endpoint) {
-  for (const std::string_view wildcard : {"tcp://0.0.0.0:", "tcp://*:"}) {
-    if (endpoint.compare(0, wildcard.size(), wildcard) == 0) {
-      return "tcp://127.0.0.1:" + endpoint.substr(wildcard.size());
-    }
-  }
-  return endpoint;
 }
 
 std::string_view view(const zmq::message_t& frame) {
@@ -70,6 +64,9 @@ struct SolverHub::Impl {
   zmq::message_t payload_frame;
   double codec_seconds = 0;
   std::uint64_t bytes_received = 0, bytes_sent = 0;
+  std::string run_token = fresh_run_token();
+  DroppedMessages dropped;
+  bool listens_everywhere = false;
 
   /// Waits until a message is readable or the deadline passes (signals do not cut the wait short).
   bool wait_readable(Clock::time_point deadline) {
@@ -140,19 +137,17 @@ struct SolverHub::Impl {
   /// Parses payload_frame: a state into `state`, any other body into `incoming`; `body` says
   /// which. A state as our client writes it goes straight into `state` (wire_frames.h), anything
   /// else through the generated code. False when malformed.
-  bool parse_payload(coupling::StepState& state, wire::Envelope::BodyCase& body) {
+  bool parse_payload(const std::uint8_t* data, std::size_t size, coupling::StepState& state,
+                     wire::Envelope::BodyCase& body) {
     const std::uint8_t* state_body = nullptr;
     std::size_t state_size = 0;
-    if (wire::envelope_body(payload_frame.data(), payload_frame.size(),
-                            wire::Envelope::kStateFieldNumber, &state_body, &state_size) &&
+    if (wire::envelope_body(data, size, wire::Envelope::kStateFieldNumber, &state_body,
+                            &state_size) &&
         wire::read_state_body(state_body, state_size, state, diagnostics_scratch)) {
       body = wire::Envelope::kState;
       return true;
     }
-    if (!wire::parse_envelope(payload_frame.data(), payload_frame.size(), state_message, incoming,
-                              body)) {
-      return false;
-    }
+    if (!wire::parse_envelope(data, size, state_message, incoming, body)) return false;
     if (body == wire::Envelope::kState) wire::from_wire(state_message, state);
     return true;
   }
@@ -173,6 +168,49 @@ struct SolverHub::Impl {
     }
   }
 
+  /// The run token of payload_frame (and the rest of it), if it carries this run's.
+  bool has_run_token(const std::uint8_t** rest, std::size_t* rest_size) const {
+    std::string_view token;
+    return wire::split_run_token(payload_frame.data(), payload_frame.size(), &token, rest,
+                                 rest_size) &&
+           wire::same_token(token, run_token);
+  }
+
+  /// A message without this run's token: counted and logged; a Hello is refused (without
+  /// waiting: a stranger that does not read cannot block the coupler).
+  void drop_without_token(std::string_view peer, bool well_formed) {
+    wire::Envelope::BodyCase body = wire::Envelope::BODY_NOT_SET;
+    const bool parsed =
+        well_formed && wire::parse_envelope(payload_frame.data(), payload_frame.size(),
+                                            state_message, incoming, body);
+    if (!parsed || body != wire::Envelope::kHello) {
+      const auto known = phase_of_peer.find(peer);
+      dropped.add(std::string("a message without the run token from ") +
+                  (known != phase_of_peer.end()
+                       ? "the connection of the " + known->second + " solver"
+                       : "an unknown peer"));
+      return;
+    }
+    const wire::Hello& hello = incoming.hello();
+    dropped.add("refused a Hello with no or a wrong run token (claims: " +
+                printable(hello.phase()) + " solver '" + printable(hello.solver_name()) +
+                "', pid " + std::to_string(hello.pid()) + ")");
+    outgoing.mutable_error()->set_phase("coupler");
+    outgoing.mutable_error()->set_message(
+        "refused: this Hello carries no or a wrong run token (a solver started by the coupler "
+        "finds "
+        "it in $POROSPH_RUN_TOKEN; for `coupler run --attach`, set POROSPH_RUN_TOKEN to the "
+        "token the coupler printed)");
+    try {
+      zmq::message_t reply = wire::to_frame(outgoing);
+      if (socket.send(zmq::buffer(peer), zmq::send_flags::sndmore | zmq::send_flags::dontwait)) {
+        (void)socket.send(reply, zmq::send_flags::dontwait);
+      }
+    } catch (const zmq::error_t&) {
+      // Gone already: nothing to refuse.
+    }
+  }
+
   void send_outgoing(const std::string& peer, const std::string& phase) {
     const auto start = Clock::now();
     send_frames(peer, phase, wire::to_frame(outgoing));
@@ -180,21 +218,42 @@ struct SolverHub::Impl {
   }
 };
 
-SolverHub::SolverHub(const std::string& endpoint) : impl_(std::make_unique<Impl>()) {
+SolverHub::SolverHub(const std::string& endpoint, std::size_t max_frame_bytes)
+    : impl_(std::make_unique<Impl>()) {
   Impl& d = *impl_;
+  const BindPlan plan = plan_bind(endpoint);
+  d.listens_everywhere = plan.wildcard;
+  std::string bound;
   try {
     d.socket.set(zmq::sockopt::linger, kLingerMilliseconds);
     d.socket.set(zmq::sockopt::router_mandatory, true);
     d.socket.set(zmq::sockopt::sndtimeo, kSendTimeoutMilliseconds);
-    d.socket.bind(endpoint);
-    d.connect_endpoint = connectable(d.socket.get(zmq::sockopt::last_endpoint));
+    d.socket.set(zmq::sockopt::maxmsgsize, static_cast<std::int64_t>(max_frame_bytes));
+    if (plan.ipv6) d.socket.set(zmq::sockopt::ipv6, true);
   } catch (const zmq::error_t& e) {
-    throw std::runtime_error("cannot listen for solvers on '" + endpoint + "': " + e.what());
+    throw std::runtime_error("cannot set up the solver socket: " + std::string(e.what()));
   }
-  const std::string ipc = "ipc://";
-  if (d.connect_endpoint.compare(0, ipc.size(), ipc) == 0 &&
-      d.connect_endpoint.compare(ipc.size(), 1, "@") != 0) {
-    d.ipc_path = d.connect_endpoint.substr(ipc.size());  // not for abstract sockets (ipc://@name)
+  std::string port;  // of the first address, for the others of a host name bound to port 0
+  for (std::string address : plan.endpoints) {
+    if (!port.empty()) address = address.substr(0, address.rfind(':') + 1) + port;
+    // The socket file is created by bind: private from its first moment, whatever the umask.
+    const mode_t umask_before = plan.ipc_path.empty() ? 0 : ::umask(0077);
+    try {
+      d.socket.bind(address);
+    } catch (const zmq::error_t& e) {
+      if (!plan.ipc_path.empty()) ::umask(umask_before);
+      throw BadEndpoint("cannot listen for solvers on '" + endpoint + "': " + e.what());
+    }
+    if (!plan.ipc_path.empty()) ::umask(umask_before);
+    if (bound.empty()) {
+      bound = d.socket.get(zmq::sockopt::last_endpoint);
+      if (plan.ipc_path.empty()) port = bound.substr(bound.rfind(':') + 1);
+    }
+  }
+  d.connect_endpoint = connectable(bound);
+  if (!plan.ipc_path.empty()) {
+    d.ipc_path = plan.ipc_path;
+    ::chmod(d.ipc_path.c_str(), 0600);  // belt and braces: umask covered the creation
   }
 }
 
@@ -211,8 +270,16 @@ bool SolverHub::receive(Incoming& out, double timeout_seconds) {
     if (frames == Impl::Frames::None) continue;
     const auto start = Clock::now();
     const std::string_view peer = view(d.peer_frame);
+    const std::uint8_t* rest = nullptr;
+    std::size_t rest_size = 0;
+    if (!d.has_run_token(&rest, &rest_size)) {
+      d.drop_without_token(peer, frames == Impl::Frames::WellFormed);
+      d.codec_seconds += seconds_since(start);
+      continue;
+    }
     wire::Envelope::BodyCase body = wire::Envelope::BODY_NOT_SET;
-    const bool parsed = frames == Impl::Frames::WellFormed && d.parse_payload(out.state, body);
+    const bool parsed =
+        frames == Impl::Frames::WellFormed && d.parse_payload(rest, rest_size, out.state, body);
     if (parsed && body == wire::Envelope::kHello) {
       const wire::Hello& hello = d.incoming.hello();
       d.register_hello(peer, hello.phase());
@@ -226,7 +293,12 @@ bool SolverHub::receive(Incoming& out, double timeout_seconds) {
       return true;
     }
     const auto known = d.phase_of_peer.find(peer);
-    if (known == d.phase_of_peer.end()) continue;  // a peer that never said Hello: drop
+    if (known == d.phase_of_peer.end()) {  // never said Hello, refused or replaced: drop
+      d.dropped.add(
+          "a message from a connection that is no phase's solver (it said no Hello, "
+          "or its Hello was refused or replaced)");
+      continue;
+    }
     out.phase = known->second;
     const auto protocol_error = [&out](const std::string& what) {
       out.kind = Incoming::Kind::Error;
@@ -306,5 +378,8 @@ void SolverHub::send_shutdown(const std::string& phase, const std::string& reaso
 double SolverHub::codec_seconds() const { return impl_->codec_seconds; }
 std::uint64_t SolverHub::bytes_received() const { return impl_->bytes_received; }
 std::uint64_t SolverHub::bytes_sent() const { return impl_->bytes_sent; }
+std::uint64_t SolverHub::dropped_messages() const { return impl_->dropped.count(); }
+bool SolverHub::listens_everywhere() const { return impl_->listens_everywhere; }
+const std::string& SolverHub::run_token() const { return impl_->run_token; }
 
 }  // namespace porosph::coupler

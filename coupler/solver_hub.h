@@ -3,10 +3,12 @@
 // works with the plain structs of proto/coupling_client.h.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
 
+#include "coupler/hub_endpoint.h"
 #include "proto/coupling_client.h"
 
 namespace porosph::coupler {
@@ -33,9 +35,15 @@ struct Incoming {
 
 class SolverHub {
  public:
-  /// Binds a ROUTER socket to `endpoint` ("ipc://..." or "tcp://*:port"). Throws
-  /// std::runtime_error.
-  explicit SolverHub(const std::string& endpoint);
+  /// Without a scene to size it from: 64 MiB (a state of ~400,000 overlap particles in 3D).
+  static constexpr std::size_t kDefaultMaxFrameBytes = std::size_t{64} << 20;
+
+  /// Binds a ROUTER socket to `endpoint` (hub_endpoint.h: "ipc://PATH", "tcp://HOST:PORT"; an
+  /// ipc socket file gets mode 0600 whatever the umask) and draws a fresh run token. A frame
+  /// longer than `max_frame_bytes` closes its sender's connection unread (ZMQ_MAXMSGSIZE).
+  /// Throws BadEndpoint for an endpoint it cannot listen on, std::runtime_error otherwise.
+  explicit SolverHub(const std::string& endpoint,
+                     std::size_t max_frame_bytes = kDefaultMaxFrameBytes);
   ~SolverHub();
   SolverHub(const SolverHub&) = delete;
   SolverHub& operator=(const SolverHub&) = delete;
@@ -43,10 +51,17 @@ class SolverHub {
   /// The endpoint solvers should connect to (for tcp://*:0 the port actually bound).
   std::string connect_endpoint() const;
 
+  /// The secret of this run (64 hex digits): a solver's messages must carry it
+  /// (Envelope.run_token).
+  const std::string& run_token() const;
+
   /// Waits up to `timeout_seconds` for one message from any solver. Returns false on timeout.
-  /// A Hello registers the sender's phase; messages from a peer that never said Hello (or whose
-  /// Hello was refused with send_error) are dropped. A frame that does not parse as an Envelope
-  /// from a registered peer arrives as an Error ("protocol violation by the <phase> solver: ...").
+  /// Every message without this hub's run token is dropped and counted (dropped_messages());
+  /// a Hello without it is also answered with an Error and never registers. A Hello with it
+  /// registers the sender's phase; messages from a peer that never said Hello (or whose Hello
+  /// was refused with send_error) are dropped and counted. A frame with the token that does not
+  /// parse as an Envelope from a registered peer arrives as an Error ("protocol violation by
+  /// the <phase> solver: ...").
   bool receive(Incoming& out, double timeout_seconds);
 
   /// Answers the latest Hello of `phase` with the Setup; that solver becomes the phase's solver
@@ -67,6 +82,10 @@ class SolverHub {
   /// Payload bytes (serialised Envelopes, without ZeroMQ's framing) received / sent so far.
   std::uint64_t bytes_received() const;
   std::uint64_t bytes_sent() const;
+  /// Messages dropped so far (see receive()); logged rate-limited on stderr.
+  std::uint64_t dropped_messages() const;
+  /// The endpoint listens on every interface (tcp://*:P, 0.0.0.0, [::]).
+  bool listens_everywhere() const;
 
  private:
   struct Impl;

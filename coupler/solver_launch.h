@@ -2,10 +2,14 @@
 // its arguments, and the environment the solver processes share the cores by.
 #pragma once
 
+#include <cstddef>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "coupler/socket_dir.h"
+#include "coupler/solver_hub.h"
 #include "scene/scene.h"
 
 namespace porosph::coupler {
@@ -23,11 +27,30 @@ struct SolverCommand {
 SolverCommand resolve_solver_command(const std::string& phase, const std::string& command_line,
                                      const scene::Scene& scene);
 
-/// Environment of the solvers of a run with `solvers` processes: POROSPH_ENDPOINT, and when
-/// several share the cores (unless the user set them) OMP_WAIT_POLICY=PASSIVE and
-/// OMP_NUM_THREADS = cores / solvers: OpenMP threads that spin while their process waits for the
-/// coupler steal the other solver's core (measured: 30x slower).
+/// Environment of the solvers of a run with `solvers` processes: POROSPH_ENDPOINT,
+/// POROSPH_RUN_TOKEN (the run's secret: in the environment, not on the command line, so that
+/// other users cannot read it), and when several share the cores (unless the user set them)
+/// OMP_WAIT_POLICY=PASSIVE and OMP_NUM_THREADS = cores / solvers: OpenMP threads that spin while
+/// their process waits for the coupler steal the other solver's core (measured: 30x slower).
 std::vector<std::pair<std::string, std::string>> solver_environment(const std::string& endpoint,
+                                                                    const std::string& run_token,
                                                                     unsigned solvers);
+
+/// The largest frame a solver of `scene` can need to send (its whole phase as overlap particles,
+/// with every optional array, twice over), for SolverHub's frame limit: the particle lattice of
+/// the box around the domain and every wall, grown by 8 dp on each side; at least 1 MiB.
+std::size_t max_frame_bytes(const scene::Scene& scene);
+
+/// The hub of a run, its frames limited by max_frame_bytes(scene): at `endpoint`, or (empty) at a
+/// fresh ipc socket in a private directory that `socket_dir` then holds (keep it until the hub is
+/// gone; older directories of dead couplers are swept first). Throws BadEndpoint,
+/// std::runtime_error.
+std::unique_ptr<SolverHub> open_solver_hub(const std::string& endpoint, const scene::Scene& scene,
+                                           std::unique_ptr<PrivateSocketDir>& socket_dir);
+
+/// What `coupler run --attach` tells the user: where the solvers connect, the token they need
+/// (POROSPH_RUN_TOKEN) and, for `everywhere`, that every interface of the machine listens.
+std::string attach_instructions(const std::vector<std::string>& phases, const std::string& endpoint,
+                                const std::string& run_token, bool everywhere);
 
 }  // namespace porosph::coupler

@@ -16,6 +16,7 @@
 #include "proto/wire_convert.h"
 #include "proto/wire_frames.h"
 #include "proto/wire_message.h"
+#include "proto/wire_token.h"
 
 namespace porosph::coupling {
 namespace {
@@ -54,6 +55,7 @@ struct CouplingClient::Impl {
   StateDeltaEncoder state_delta;  ///< what each state may leave out (proto/state_delta.h)
   double communication_seconds = 0;
   std::uint64_t last_sent_step = 0;  ///< step of the last state sent (for messages)
+  std::string run_token;             ///< sent with every message (Envelope.run_token)
 
   /// Queues one frame (the DEALER queues while the coupler is not yet reachable).
   void send_frame(zmq::message_t frame, zmq::send_flags flags) {
@@ -124,8 +126,11 @@ CouplingClient::CouplingClient(const std::string& endpoint, const SolverIdentity
   Impl& d = *impl_;
   d.endpoint = endpoint;
   d.identity = identity;
+  d.run_token = identity.run_token.empty() ? resolve_run_token() : identity.run_token;
+  d.outgoing.set_run_token(d.run_token);  // kept: only the body changes between messages
   try {
     d.socket.set(zmq::sockopt::linger, kLingerMilliseconds);
+    d.socket.set(zmq::sockopt::ipv6, true);  // tcp://[::1]:P and host names with IPv6 addresses
     d.socket.connect(endpoint);
   } catch (const zmq::error_t& e) {
     throw CouplingError("cannot connect to the coupler at '" + endpoint + "': " + e.what());
@@ -171,8 +176,11 @@ const StepCommand& CouplingClient::exchange(const StepState& state) {
 void CouplingClient::send_state(const StepState& state) {
   Impl& d = *impl_;
   const auto start = Clock::now();
-  zmq::message_t frame(d.state_frame.prepare(state, d.state_delta.next(state)));
-  d.state_frame.write(static_cast<std::uint8_t*>(frame.data()));
+  const std::size_t state_bytes = d.state_frame.prepare(state, d.state_delta.next(state));
+  zmq::message_t frame(state_bytes + wire::token_field_bytes(d.run_token));
+  auto* bytes = static_cast<std::uint8_t*>(frame.data());
+  d.state_frame.write(bytes);
+  wire::write_token_field(d.run_token, bytes + state_bytes);  // last, as the serialiser puts it
   d.send_frame(std::move(frame), zmq::send_flags::dontwait);
   d.last_sent_step = state.step;
   d.communication_seconds += std::chrono::duration<double>(Clock::now() - start).count();
@@ -227,6 +235,11 @@ std::string resolve_endpoint(const std::string& cli_value) {
       "scene.toml`), "
       "which sets POROSPH_ENDPOINT; to attach by hand, pass --endpoint tcp://HOST:PORT (see "
       "`coupler run --attach`)");
+}
+
+std::string resolve_run_token() {
+  const char* from_env = std::getenv(kRunTokenVariable);
+  return from_env != nullptr ? from_env : "";
 }
 
 }  // namespace porosph::coupling

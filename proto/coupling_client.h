@@ -23,6 +23,9 @@ struct SolverIdentity {
   /// Announced in Hello. Leave it at kProtocolVersion; the test dummies override it to exercise the
   /// coupler's version check.
   std::uint32_t protocol_version = kProtocolVersion;
+  /// The run's secret, sent with every message (docs/protocol.md, "Who can connect"). Empty: the
+  /// value of POROSPH_RUN_TOKEN, which the coupler sets for the solvers it starts.
+  std::string run_token;
 };
 
 /// What the coupler tells a solver before the first step.
@@ -166,5 +169,12 @@ class CouplingClient {
 /// Endpoint a solver should use when started by the coupler: the value of the environment variable
 /// POROSPH_ENDPOINT, or the --endpoint argument when given (non-empty `cli_value` wins).
 std::string resolve_endpoint(const std::string& cli_value);
+
+/// The environment variable that carries the run token to a solver.
+inline constexpr const char* kRunTokenVariable = "POROSPH_RUN_TOKEN";
+
+/// The run token a solver sends: the value of POROSPH_RUN_TOKEN ("" when unset; the coupler then
+/// refuses the solver's Hello and says why).
+std::string resolve_run_token();
 
 }  // namespace porosph::coupling

@@ -12,7 +12,8 @@ docs/solver-protocol.md.
   rigid_soil.py [--endpoint E] [--connect-timeout S] [--protocol-version V] [--fail-at-step N]
 
 Started by the coupler (soil.solver = "build/python/rigid_soil.py", or --set soil.solver=...),
-it connects to --endpoint or $POROSPH_ENDPOINT. --protocol-version announces another version in
+it connects to --endpoint or $POROSPH_ENDPOINT and sends the run token of $POROSPH_RUN_TOKEN with
+every message (the coupler drops messages without it; docs/protocol.md). --protocol-version announces another version in
 Hello (to see the coupler refuse it); --fail-at-step N reports an Error instead of the state of
 step N. It needs porosph_pb2.py (protoc --python_out, done by the build into build/python/) on
 its module path, and python3-zmq / python3-protobuf.
@@ -59,17 +60,19 @@ class UnsupportedScene(ValueError):
 class CouplerConnection:
     """One DEALER socket to the coupler's ROUTER; one serialised Envelope per ZeroMQ message."""
 
-    def __init__(self, endpoint):
+    def __init__(self, endpoint, run_token):
         self.context = zmq.Context()
         self.socket = self.context.socket(zmq.DEALER)
         self.socket.setsockopt(zmq.LINGER, LINGER_MILLISECONDS)
+        self.socket.setsockopt(zmq.IPV6, 1)  # tcp://[::1]:P, host names with IPv6 addresses
+        self.run_token = run_token  # the run's secret, carried by every message
         self.socket.connect(endpoint)
         self.seconds = 0.0  # spent sending and waiting (the Goodbye's communication_seconds)
 
     def send(self, body, message):
         """Sends `message` as the Envelope field `body` ("hello", "state", "error", ...)."""
         start = time.monotonic()
-        envelope = wire.Envelope()
+        envelope = wire.Envelope(run_token=self.run_token)
         getattr(envelope, body).CopyFrom(message)
         self.socket.send(envelope.SerializeToString())
         self.seconds += time.monotonic() - start
@@ -302,7 +305,7 @@ def parse_options(argv):
 
 def main(argv):
     options = parse_options(argv)
-    connection = CouplerConnection(options.endpoint)
+    connection = CouplerConnection(options.endpoint, os.environ.get("POROSPH_RUN_TOKEN", ""))
     try:
         return run(options, connection)
     except CouplerGone as error:

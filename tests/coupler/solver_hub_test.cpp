@@ -33,7 +33,8 @@ struct DummyRun {
   DummyRun(const std::string& phase, const std::vector<std::string>& extra_args)
       : hub(unique_ipc_endpoint()),
         process(POROSPH_BIN_DIR "/dummy_solver", arguments(phase, extra_args),
-                {{"POROSPH_ENDPOINT", hub.connect_endpoint()}}) {}
+                {{"POROSPH_ENDPOINT", hub.connect_endpoint()},
+                 {"POROSPH_RUN_TOKEN", hub.run_token()}}) {}
 
   static std::vector<std::string> arguments(const std::string& phase,
                                             const std::vector<std::string>& extra) {

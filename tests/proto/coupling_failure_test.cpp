@@ -19,7 +19,7 @@ namespace {
 TEST(CouplingWire, ProtocolMismatchRefusedWithTheCouplersMessage) {
   SolverHub hub(unique_ipc_endpoint());
   ClientThread client([&] {
-    coupling::SolverIdentity identity{"water", "old-solver", "0.1"};
+    coupling::SolverIdentity identity = identity_for(hub, "water", "old-solver", "0.1");
     identity.protocol_version = 99;
     CouplingClient c(hub.connect_endpoint(), identity, kWait);
   });
@@ -34,7 +34,8 @@ TEST(CouplingWire, ProtocolMismatchRefusedWithTheCouplersMessage) {
 
 TEST(CouplingWire, ClientGivesUpWhenNoSetupArrives) {
   SolverHub hub(unique_ipc_endpoint());
-  ClientThread client([&] { CouplingClient c(hub.connect_endpoint(), {"water", "t", "1"}, 0.2); });
+  ClientThread client(
+      [&] { CouplingClient c(hub.connect_endpoint(), identity_for(hub, "water"), 0.2); });
   Incoming in = receive_or_fail(hub);  // the Hello arrives; the hub never answers it
   EXPECT_EQ(in.kind, Incoming::Kind::Hello);
   EXPECT_TRUE(client.threw_coupling_error());
@@ -45,7 +46,7 @@ TEST(CouplingWire, ClientGivesUpWhenNoSetupArrives) {
 TEST(CouplingWire, ExchangeTimesOutAfterTheSetupTimeout) {
   SolverHub hub(unique_ipc_endpoint());
   ClientThread client([&] {
-    CouplingClient c(hub.connect_endpoint(), {"water", "t", "1"}, kWait);
+    CouplingClient c(hub.connect_endpoint(), identity_for(hub, "water"), kWait);
     c.exchange(coupling::StepState{});
   });
   Incoming in = receive_or_fail(hub);
@@ -61,7 +62,7 @@ TEST(CouplingWire, ExchangeTimesOutAfterTheSetupTimeout) {
 TEST(CouplingWire, ShutdownEndsTheExchangeWithTheReason) {
   SolverHub hub(unique_ipc_endpoint());
   ClientThread client([&] {
-    CouplingClient c(hub.connect_endpoint(), {"water", "t", "1"}, kWait);
+    CouplingClient c(hub.connect_endpoint(), identity_for(hub, "water"), kWait);
     c.exchange(coupling::StepState{});
   });
   Incoming in = receive_or_fail(hub);
@@ -85,7 +86,7 @@ TEST(CouplingWire, TcpPortZeroReportsTheRealPort) {
     EXPECT_GT(port, 0);
     EXPECT_LT(port, 65536);
     ClientThread client([&] {
-      CouplingClient c(endpoint, {"soil", "t", "1"}, kWait);
+      CouplingClient c(endpoint, identity_for(hub, "soil"), kWait);
       EXPECT_EQ(c.setup().scene_name, "roundtrip");
     });
     Incoming in = receive_or_fail(hub);
@@ -102,10 +103,12 @@ TEST(CouplingWire, HubDropsPeersWithoutHelloAndFlagsGarbage) {
   raw.set(zmq::sockopt::linger, 0);
   raw.connect(hub.connect_endpoint());
   wire::Envelope envelope;
+  envelope.set_run_token(hub.run_token());
   envelope.mutable_state()->set_step(3);
   raw.send(zmq::buffer(envelope.SerializeAsString()));
   Incoming in;
-  EXPECT_FALSE(hub.receive(in, 0.3));  // a state from a stranger is dropped
+  EXPECT_FALSE(hub.receive(in, 0.3));  // a state from a peer that said no Hello is dropped
+  EXPECT_EQ(hub.dropped_messages(), 1u);
 
   envelope.mutable_hello()->set_phase("water");
   envelope.mutable_hello()->set_protocol_version(coupling::kProtocolVersion);
@@ -113,11 +116,19 @@ TEST(CouplingWire, HubDropsPeersWithoutHelloAndFlagsGarbage) {
   ASSERT_TRUE(hub.receive(in, kWait));
   EXPECT_EQ(in.kind, Incoming::Kind::Hello);
 
-  raw.send(zmq::str_buffer("\xff\xff\xff not protobuf"));
+  raw.send(zmq::str_buffer("\xff\xff\xff not protobuf"));  // no token: nobody's, dropped
+  EXPECT_FALSE(hub.receive(in, 0.3));
+  EXPECT_EQ(hub.dropped_messages(), 2u);
+
+  wire::Envelope token_only;  // garbage with the token: the registered solver's protocol error
+  token_only.set_run_token(hub.run_token());
+  // A state whose step varint breaks off, then the token.
+  raw.send(zmq::buffer("\x1a\x02\x08\x80" + token_only.SerializeAsString()));
   ASSERT_TRUE(hub.receive(in, kWait));
   EXPECT_EQ(in.kind, Incoming::Kind::Error);
   EXPECT_EQ(in.phase, "water");
   EXPECT_NE(in.error_message.find("malformed"), std::string::npos) << in.error_message;
+  EXPECT_EQ(hub.dropped_messages(), 2u);
 }
 
 TEST(CouplingWire, FileOfAnIpcEndpointIsRemovedWithTheHub) {

@@ -50,7 +50,8 @@ TEST(CouplingWire, HandshakeExchangesAndGoodbye) {
   std::vector<const double*> acceleration_storage;
   double client_communication = -1;
   ClientThread client([&] {
-    CouplingClient c(hub.connect_endpoint(), {"water", "test-solver", "9.9"}, kWait);
+    CouplingClient c(hub.connect_endpoint(), identity_for(hub, "water", "test-solver", "9.9"),
+                     kWait);
     client_setup = c.setup();
     coupling::StepState state;
     for (std::uint64_t k = 0;; ++k) {
@@ -127,7 +128,7 @@ TEST(CouplingWire, HandshakeExchangesAndGoodbye) {
 TEST(CouplingWire, TwoSolversAreRoutedByPhase) {
   SolverHub hub(unique_ipc_endpoint());
   const auto run_solver = [&hub](const std::string& phase, double* dt_seen) {
-    CouplingClient c(hub.connect_endpoint(), {phase, "test-" + phase, "1"}, kWait);
+    CouplingClient c(hub.connect_endpoint(), identity_for(hub, phase, "test-" + phase, "1"), kWait);
     coupling::StepState state;
     state.step = 0;
     state.dt_limit = c.setup().dt0;  // echo: proves each solver got its own Setup
@@ -167,7 +168,7 @@ TEST(CouplingWire, TwoSolversAreRoutedByPhase) {
 TEST(CouplingWire, ErrorFromSolverCarriesMessageStepAndParticle) {
   SolverHub hub(unique_ipc_endpoint());
   ClientThread client([&] {
-    CouplingClient c(hub.connect_endpoint(), {"soil", "test-solver", "1"}, kWait);
+    CouplingClient c(hub.connect_endpoint(), identity_for(hub, "soil", "test-solver", "1"), kWait);
     c.report_error("particle left the domain", 5, 0.25, 42);
   });
   Incoming in = receive_or_fail(hub);
@@ -187,7 +188,7 @@ TEST(CouplingWire, StraySecondHelloIsRefusedWithoutLosingTheRunningSolver) {
   SolverHub hub(unique_ipc_endpoint());
   double first_dt = 0;
   ClientThread first([&] {
-    CouplingClient c(hub.connect_endpoint(), {"water", "first", "1"}, kWait);
+    CouplingClient c(hub.connect_endpoint(), identity_for(hub, "water", "first", "1"), kWait);
     first_dt = c.exchange(coupling::StepState{}).dt;
   });
   Incoming in = receive_or_fail(hub);
@@ -196,7 +197,8 @@ TEST(CouplingWire, StraySecondHelloIsRefusedWithoutLosingTheRunningSolver) {
   ASSERT_TRUE(hub.receive(in, kWait));
   ASSERT_EQ(in.kind, Incoming::Kind::State);  // the first solver now waits for its command
 
-  ClientThread second([&] { CouplingClient c(hub.connect_endpoint(), {"water", "second", "1"}); });
+  ClientThread second(
+      [&] { CouplingClient c(hub.connect_endpoint(), identity_for(hub, "water", "second", "1")); });
   ASSERT_TRUE(hub.receive(in, kWait));
   ASSERT_EQ(in.kind, Incoming::Kind::Hello);
   EXPECT_EQ(in.solver_name, "second");

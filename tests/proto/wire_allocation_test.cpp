@@ -153,7 +153,9 @@ TEST(WireAllocation, ExchangeThroughZeroMqAllocatesNothingInSteadyState) {
   constexpr int kWarmUp = 2, kSteps = 20;
   long client_allocations = -1;
   std::thread client([&] {
-    coupling::CouplingClient c(hub.connect_endpoint(), {"water", "t", "1"}, 10.0);
+    coupling::SolverIdentity identity{"water", "t", "1"};
+    identity.run_token = hub.run_token();
+    coupling::CouplingClient c(hub.connect_endpoint(), identity, 10.0);
     const coupling::StepState state = overlap_state(0.0);
     for (int step = 0; step < kWarmUp; ++step) c.exchange(state);
     client_allocations = allocations_in([&] {

@@ -27,6 +27,15 @@ inline std::string unique_ipc_endpoint() {
   return "ipc:///tmp/porosph-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
 }
 
+/// A solver identity that carries `hub`'s run token (as POROSPH_RUN_TOKEN would).
+inline coupling::SolverIdentity identity_for(const SolverHub& hub, const std::string& phase,
+                                             const std::string& name = "t",
+                                             const std::string& version = "1") {
+  coupling::SolverIdentity identity{phase, name, version};
+  identity.run_token = hub.run_token();
+  return identity;
+}
+
 /// Runs a client body in a thread; the destructor joins, so a failed assertion cannot leave it
 /// running. error() joins and returns the exception message ("" if none).
 class ClientThread {
