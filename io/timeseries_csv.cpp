@@ -1,6 +1,7 @@
 #include "io/timeseries_csv.h"
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
@@ -32,7 +33,13 @@ TimeSeriesCsv::TimeSeriesCsv(const std::string& path, std::vector<std::string> c
     throw std::runtime_error("TimeSeriesCsv: cannot create '" + path_ +
                              "': " + std::strerror(errno));
   }
-  write_or_throw(header_line() + '\n');
+  try {
+    write_or_throw(header_line() + '\n');
+  } catch (const std::runtime_error&) {
+    file_.reset();
+    std::remove(path_.c_str());  // no empty file without a header left behind (a full disk)
+    throw;
+  }
 }
 
 TimeSeriesCsv::TimeSeriesCsv(const std::string& path, std::vector<std::string> columns,

@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -83,6 +84,25 @@ TEST(TimeSeriesCsv, ErrorsNameThePath) {
   }
   EXPECT_EQ(read_text(path), "t,dt\n1,0.5\n");  // the bad row wrote nothing
   EXPECT_THROW(TimeSeriesCsv(dir.file("empty.csv"), {}), std::runtime_error);
+}
+
+// A full disk from the start (timeseries.csv links to /dev/full): the error names the file and
+// the system's reason, and no empty file stays behind (issue 29).
+TEST(TimeSeriesCsv, AFullDiskLeavesNoEmptyFile) {
+  ScratchDir dir;
+  const std::string path = dir.file("timeseries.csv");
+  if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  std::filesystem::create_symlink("/dev/full", path);
+  try {
+    TimeSeriesCsv csv(path, {"t", "dt"});
+    ADD_FAILURE() << "no exception";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find(path), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("No space left on device"), std::string::npos)
+        << error.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(std::filesystem::symlink_status(path)));
+  EXPECT_TRUE(std::filesystem::exists("/dev/full"));
 }
 
 }  // namespace
