@@ -57,9 +57,12 @@ int main(int argc, char** argv) {
   run->add_option("--fluid-solver", run_options.fluid_solver, "water solver executable");
   run->add_option("--soil-solver", run_options.soil_solver, "soil solver executable");
   run->add_flag("--attach", run_options.attach,
-                "do not start solvers: wait for solvers started by hand at --endpoint");
+                "do not start solvers: wait for solvers started by hand at --endpoint (it "
+                "prints the run token they need in POROSPH_RUN_TOKEN)");
   run->add_option("--endpoint", run_options.endpoint,
-                  "ZeroMQ endpoint to bind (default: a fresh ipc:// path)");
+                  "ZeroMQ endpoint to bind: ipc://PATH or tcp://HOST:PORT, HOST an address, "
+                  "[IPv6], a host name or * (default: a fresh ipc:// socket in a private "
+                  "directory; docs/protocol.md)");
   run->add_flag("--no-progress", no_progress, "do not print the progress line");
 
   std::string check_path;
