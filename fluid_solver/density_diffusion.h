@@ -1,9 +1,8 @@
 // Density diffusion term ("delta-SPH") of Molteni & Colagrossi (2009), "A simple procedure to
 // improve the pressure evaluation in hydrodynamic context using the SPH", Comput. Phys. Commun.
-// 180, 861-872, with the hydrostatic correction of Fourtakas, Dominguez, Vacondio & Rogers (2019),
-// "Local Uniform Stencil (LUST) boundary condition ...", Comput. Fluids 190, 346-361, as
-// DualSPHysics implements it (DensityDT = 2, "DDT Fourtakas"; there with |g_z| and z: here with the
-// gravity vector). It is added to the right-hand side of the continuity equation (eq. 2):
+// 180, 861-872, with a hydrostatic correction written in the enthalpy of the Tait EOS (below; to
+// first order the correction of Fourtakas et al. 2019). It is added to the right-hand side of the
+// continuity equation (eq. 2):
 //   drho_a/dt = rho_a sum_b V_b v_ab . grad_a W_ab + D_a,
 //   D_a = delta h c0 sum_b 2 (rho_b - rho_a - rho^H_ab) V_b (x_ba . grad_a W_ab) / (r^2 + eta^2)
 // with x_ba = x_b - x_a, V_b = m_b / rho_b, eta^2 = 0.01 h^2, delta ~ 0.1 (dimensionless).
@@ -14,23 +13,30 @@
 // the pair weight is -(x_ab . grad_a W_ab); the equivalent form with (rho_a - rho_b) x_ab is the
 // one of TrixiParticles' DensityDiffusionMolteniColagrossi.)
 //
-// Hydrostatic correction: still water has grad p = rho g, so between two particles
-//   p_b - p_a = rho0 g . (x_b - x_a)        (g the gravity vector: deeper b has the larger p),
-// and inverting the Tait EOS (eq. 4) for that difference alone, as if p_a were 0 (Fourtakas et
-// al.), gives the density difference that still water has between b and a:
-//   rho^H_ab = rho0 ((1 + rho0 g . x_ba / B)^(1/gamma) - 1),   B = rho0 c0^2 / gamma.
-// Subtracting it makes the pair summand vanish in still water, so the term no longer drives a
-// flux out of a column whose kernel support is truncated (free surface, walls left out below).
-// It is exact when p_a = 0 and first-order in p/B otherwise: with p_a > 0 the residual per pair is
-// rho0 (1/gamma) (1 - 1/gamma) p_a (p_b - p_a) / B^2 + O(p^3/B^3), a fraction (1 - 1/gamma) p_a / B
-// of the uncorrected summand (up to 6 % at the bottom of the tank case, 2 % in the dam break).
-// Gravity enters as a vector: no "up" axis.
+// Hydrostatic correction: still weakly compressible water is in equilibrium when its enthalpy
+// Phi(rho) = int dp / rho follows the gravity potential, Phi_b - Phi_a = g . x_ba (g the gravity
+// vector; deeper b has the larger Phi). For the Tait EOS (eq. 4)
+//   Phi(rho) = c0^2 / (gamma - 1) ((rho / rho0)^(gamma - 1) - 1),   dPhi/drho = c^2 / rho.
+// The term diffuses the departure from that equilibrium, converted back to a density difference
+// with kappa = d rho / dp = rho / c^2 taken as the pair mean:
+//   rho_b - rho_a - rho^H_ab  ->  kappa_ab (Phi_b - Phi_a - g . x_ba),
+//   kappa_ab = (kappa_a + kappa_b) / 2,  kappa = rho0 / (c0^2 s^(gamma - 2)),  s = rho / rho0.
+// To first order in p / B it is the correction of Fourtakas, Dominguez, Vacondio & Rogers (2019),
+// "Local Uniform Stencil (LUST) boundary condition ...", Comput. Fluids 190, 346-361 (DualSPHysics
+// "DDT Fourtakas", rho^H_ab = rho0 ((1 + rho0 g . x_ba / B)^(1/gamma) - 1)), which is exact only
+// where p_a = 0: below the surface its residual, a fraction (1 - 1/gamma) p_a / B of the summand
+// (6 % at the bottom of a 0.6 m tank at c0 = 24 m/s), is a steady flux out of every truncated
+// stencil (floor, free surface) that still water answers with a steady upward creep (measured
+// 2.4e-5 m/s in the still-bed case; inside a porous bed the drag turns it into a head gradient of
+// 1 %). This form vanishes exactly, at every depth, in the weakly compressible hydrostatic state
+// p(d) = B ((1 + (gamma - 1)/gamma rho0 g d / B)^(gamma/(gamma - 1)) - 1), and its summand is
+// exactly antisymmetric (see Conservation). Gravity enters as a vector: no "up" axis.
 //
 // Conservation: the uncorrected summand K_ab (rho_b - rho_a) with the symmetric pair weight
 // K_ab = 2 (x_ba . grad_a W_ab) / (r^2 + eta^2) >= 0 is antisymmetric, so sum_a V_a D_a = 0: the
-// term only moves density between particles, and what it gives one it takes from another. The
-// correction is not exactly antisymmetric: rho^H_ab + rho^H_ba = rho0 (1/gamma)(1/gamma - 1)
-// (rho0 g . x_ba / B)^2 + ..., a second-order leak that vanishes without gravity.
+// term only moves density between particles, and what it gives one it takes from another. With the
+// hydrostatic correction the bracket Phi_b - Phi_a - g . x_ba is antisymmetric and kappa_ab
+// symmetric, so the corrected summand is antisymmetric too and the sum stays zero to round-off.
 //
 // Applied between water particles only: wall particles carry Adami-extrapolated densities that
 // already follow the water (wall_boundary.h), and a flux to them would be lost rather than
@@ -48,54 +54,64 @@ namespace porosph::fluid {
 template <int D>
 class DensityDiffusion {
  public:
+  /// What the pair term needs of one particle, computed once per particle and step: s^(2-gamma)
+  /// (kappa / (rho0 / c0^2)) and s^(gamma-1) ((gamma - 1) Phi / c0^2 + 1), s = rho / rho0.
+  struct State {
+    double inv_s_gamma_2 = 1.0;
+    double s_gamma_1 = 1.0;
+  };
+
   DensityDiffusion() = default;
   /// delta (0: off), smoothing length h, the EOS (rho0, c0, gamma, B) and the gravity vector.
   DensityDiffusion(double delta, double h, const TaitEos& eos, const sph::Vec<D>& gravity)
       : coefficient_(delta * h * eos.c0()),
         rho0_(eos.rho0()),
-        inv_gamma_(1.0 / eos.gamma()),
-        rho0_g_over_b_(eos.rho0() / eos.b() * gravity) {
-    double c = 1.0;
-    for (int n = 1; n <= 5; ++n) c_[n - 1] = c *= (inv_gamma_ - n) / (n + 1);
-  }
+        gamma_(eos.gamma()),
+        inv_gamma_1_(1.0 / (eos.gamma() - 1.0)),
+        g_over_c0_2_(gravity / (eos.c0() * eos.c0())),
+        seven_(eos.gamma() == 7.0) {}
 
   /// delta h c0 [m^2/s]: the caller multiplies the sum of pair_term() by it once.
   double coefficient() const { return coefficient_; }
 
-  /// rho^H_ab = rho0 ((1 + rho0 g . x_ba / B)^(1/gamma) - 1), the still-water density of b minus
-  /// that of a, by its binomial series to x^6 (a few multiplications, no transcendental call per
-  /// pair). Within the kernel support |x| = |rho0 g . x_ba / B| <= gamma g 2h / c0^2: 2.8e-3 in
-  /// the tank case, 6e-4 in the dam break, below 0.004 whenever c0 >= 10 sqrt(g H) and 2h <= H
-  /// / 20. The first omitted term is 0.1 x^6 of the result: round-off (1e-13) up to |x| = 0.01 and
-  /// 1e-7 at |x| = 0.1, far below the correction's own first-order error in p/B. Needs |x| < 1.
-  double hydrostatic_difference(const sph::Vec<D>& x_ab) const {
-    const double x = -rho0_g_over_b_.dot(x_ab);  // rho0 g . x_ba / B
-    // (1 + x)^s - 1 = s x (1 + c1 x + ... + c5 x^5), c_n = prod_{i=1..n} (s - i) / (i + 1);
-    // Estrin's scheme keeps the dependency chain short.
-    const double x2 = x * x;
-    const double low = 1.0 + c_[0] * x, mid = c_[1] + c_[2] * x, high = c_[3] + c_[4] * x;
-    return rho0_ * inv_gamma_ * x * (low + x2 * (mid + x2 * high));
+  State state(double rho) const {
+    const double s = rho / rho0_;
+    if (seven_) {  // the common case, without pow()
+      const double s2 = s * s;
+      const double s5 = s2 * s2 * s;
+      return {1.0 / s5, s5 * s};
+    }
+    return {std::pow(s, 2.0 - gamma_), std::pow(s, gamma_ - 1.0)};
+  }
+
+  /// kappa_ab (Phi_b - Phi_a - g . x_ba) [kg/m^3]: the density difference of b over a that is not
+  /// hydrostatic (zero in still water at every depth; rho_b - rho_a without gravity, to first
+  /// order in p / B).
+  double hydrostatic_departure(const State& a, const State& b, const sph::Vec<D>& x_ab) const {
+    const double kappa = 0.5 * rho0_ * (a.inv_s_gamma_2 + b.inv_s_gamma_2);  // x c0^2
+    // Phi_b - Phi_a = c0^2 (s_b^(g-1) - s_a^(g-1)) / (g - 1); g . x_ba = -g . x_ab
+    return kappa * ((b.s_gamma_1 - a.s_gamma_1) * inv_gamma_1_ + g_over_c0_2_.dot(x_ab));
   }
 
   /// Summand of D_a for neighbour b, without the factor delta h c0:
-  ///   2 (rho_b - rho_a - rho^H_ab) (x_ba . grad_a W_ab) / (r^2 + eta^2) m_b / rho_b,
+  ///   2 kappa_ab (Phi_b - Phi_a - g . x_ba) (x_ba . grad_a W_ab) / (r^2 + eta^2) m_b / rho_b,
   /// from `factor` = x_ab . grad_a W_ab / (r^2 + eta^2) (viscosity_morris.h
   /// regularised_gradient_factor, shared with the Morris term) and the volume V_b = m_b / rho_b.
-  double pair_term(double rho_a, double rho_b, double volume_b, const sph::Vec<D>& x_ab,
+  double pair_term(const State& a, const State& b, double volume_b, const sph::Vec<D>& x_ab,
                    double factor) const {
     const double weight = -2.0 * factor;  // x_ba . grad W >= 0
-    return volume_b * (weight * (rho_b - rho_a - hydrostatic_difference(x_ab)));
+    return volume_b * (weight * hydrostatic_departure(a, b, x_ab));
   }
 
-  /// The same summand without the hydrostatic correction (Molteni & Colagrossi 2009 as such).
+  /// The summand without the hydrostatic correction (Molteni & Colagrossi 2009 as such).
   double uncorrected_pair_term(double rho_a, double rho_b, double volume_b, double factor) const {
     return volume_b * (-2.0 * factor * (rho_b - rho_a));
   }
 
  private:
-  double coefficient_ = 0.0, rho0_ = 1000.0, inv_gamma_ = 1.0 / 7.0;
-  double c_[5] = {};  ///< binomial series coefficients of hydrostatic_difference()
-  sph::Vec<D> rho0_g_over_b_ = sph::Vec<D>::Zero();
+  double coefficient_ = 0.0, rho0_ = 1000.0, gamma_ = 7.0, inv_gamma_1_ = 1.0 / 6.0;
+  sph::Vec<D> g_over_c0_2_ = sph::Vec<D>::Zero();
+  bool seven_ = true;
 };
 
 }  // namespace porosph::fluid

@@ -40,6 +40,8 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
     Vec acc = Vec::Zero();
     double divergence = 0.0;
     double diffusion_sum = 0.0;  // D_a / (delta h c0), water neighbours only (density_diffusion.h)
+    typename DensityDiffusion<D>::State diffusion_a;
+    if constexpr (kDiffusion) diffusion_a = diffusion.state(rho_a);
     // Water neighbours.
     for (auto it = nl.begin(a); it != nl.mid(a); ++it) {
       const std::int32_t b = it->b;
@@ -53,7 +55,8 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
         const double inv_r2_eta2 = 1.0 / (r2 + eta2);
         const double factor = regularised_gradient_factor(grad_factor * r2, inv_r2_eta2);
         if constexpr (kDiffusion) {
-          diffusion_sum += diffusion.pair_term(rho_a, rho[b], volume[b], it->x_ab, factor);
+          diffusion_sum += diffusion.pair_term(diffusion_a, diffusion.state(rho[b]), volume[b],
+                                               it->x_ab, factor);
         }
         if constexpr (kMorris) {
           acc += morris_viscous_acceleration<D>(m[b], mu, mu, inv_rho_a, inv_rho[b], factor, v_ab);

@@ -12,6 +12,7 @@
 #include "fluid_solver/wall_boundary.h"
 #include "sph/free_particle_totals.h"
 #include "sph/integrator.h"
+#include "sph/lattice_gradient.h"
 #include "sph/overlap_scatter.h"
 #include "sph/particle_removal.h"
 
@@ -40,8 +41,10 @@ template <int D>
 FluidSolver<D>::FluidSolver(const scene::Scene& s)
     : params_(FluidParams<D>::from_scene(s)),
       box_(sph::DomainBox<D>::from_scene(s, 2.0 * params_.h)),
-      cubic_(params_.h),
-      wendland_(params_.h),
+      cubic_(sph::make_kernel<sph::CubicSpline<D>>(params_.h, s.run.dp,
+                                                   s.run.kernel_gradient == "lattice")),
+      wendland_(sph::make_kernel<sph::WendlandC2<D>>(params_.h, s.run.dp,
+                                                     s.run.kernel_gradient == "lattice")),
       damping_(DampingStage::from_scene(s)),
       zones_(*s.water, params_.dp, damping_.duration()) {
   if (s.run.kernel == "cubic_spline") {

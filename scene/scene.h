@@ -54,6 +54,8 @@ struct RunSettings {
   std::vector<double> gravity;           ///< [m/s^2], length = dimension
   std::vector<bool> periodic;            ///< per axis, length = dimension
   std::string kernel = "cubic_spline";   ///< "cubic_spline" | "wendland_c2"
+  std::string kernel_gradient =
+      "lattice";  ///< "lattice" (normalised, sph/lattice_gradient.h) | "plain"
 };
 
 /// The simulation box: periodic axes wrap at its faces; particles leaving it are removed and

@@ -76,6 +76,7 @@ Scene build_scene(const toml::table& root) {
   r.gravity = vector_of(run.get("gravity"));
   for (const auto& axis : *run["periodic"].as_array()) r.periodic.push_back(*axis.value<bool>());
   r.kernel = text_of(run, "kernel");
+  r.kernel_gradient = text_of(run, "kernel_gradient");
 
   scene.domain.min = vector_of(root["domain"]["min"].node());
   scene.domain.max = vector_of(root["domain"]["max"].node());

@@ -108,6 +108,14 @@ void add_scene_and_run(SceneSchema& s) {
                        .fallback("\"cubic_spline\"")
                        .one_of({"cubic_spline", "wendland_c2"})
                        .doc("SPH smoothing kernel (support 2h)."));
+  s.keys.push_back(
+      Key("run.kernel_gradient", T::String)
+          .fallback("\"lattice\"")
+          .one_of({"lattice", "plain"})
+          .doc("\"lattice\": dW/dr divided by the kernel's gradient sum on the initial lattice "
+               "(0.9908 for the cubic spline at h = 1.2 dp), so that gradients of linear fields "
+               "are exact there (Bonet & Lok 1999, eq. 27; sph/lattice_gradient.h); \"plain\": "
+               "the kernel as published, whose gradients are that factor too small."));
 
   s.tables.push_back({"domain", false, true,
                       "The simulation box. Periodic axes wrap at its faces; particles leaving it "

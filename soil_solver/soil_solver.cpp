@@ -13,6 +13,7 @@
 #include "soil_solver/stress_update.h"
 #include "soil_solver/wall_normals.h"
 #include "sph/geometry.h"
+#include "sph/lattice_gradient.h"
 #include "sph/overlap_scatter.h"
 #include "sph/particle_removal.h"
 
@@ -28,8 +29,10 @@ template <int D>
 SoilSolver<D>::SoilSolver(const scene::Scene& s)
     : params_(SoilParams<D>::from_scene(s)),
       box_(sph::DomainBox<D>::from_scene(s, 2.0 * params_.h)),
-      cubic_(params_.h),
-      wendland_(params_.h),
+      cubic_(sph::make_kernel<sph::CubicSpline<D>>(params_.h, s.run.dp,
+                                                   s.run.kernel_gradient == "lattice")),
+      wendland_(sph::make_kernel<sph::WendlandC2<D>>(params_.h, s.run.dp,
+                                                     s.run.kernel_gradient == "lattice")),
       loads_(s.soil->loads) {
   using Vec = sph::Vec<D>;
   if (s.run.kernel == "cubic_spline") {

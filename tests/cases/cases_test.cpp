@@ -3,11 +3,14 @@
 // (at a coarser spacing) against the analytic pressure.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "io/snapshot_reader.h"
 #include "tests/cases/case_runner.h"
 #include "tests/io/xdmf_check.h"
 #include "tools/validation/case_checks.h"
 #include "tools/validation/run_directory.h"
+#include "tools/validation/still_water_check.h"
 
 namespace porosph::testing {
 namespace {
@@ -72,22 +75,29 @@ TEST(Cases, HydrostaticTankShortened) {
   expect_water_run_directory(run, 4);
 }
 
-// The full 2 s of the hydrostatic tank at dp = 0.02 m (30 x 20 particles, ~6,000 steps).
-// Measured at this coarse spacing (OpenMP order makes runs differ): row-mean pressure 0.9-2.3%
-// off rho g (H - z), per-particle error 2.4-3.9% (third row from the surface, inside the
-// kernel support of the free surface), max speed ~1.1% of sqrt(g H). The issue's 2% / 1% targets
-// are met at dp = 0.01 for the profile, not per particle (docs/validation-studies.md). The bounds below
-// keep ~2x margin over those measurements and fail on any real regression of walls, initial
-// density, EOS.
+// The full 2 s of the hydrostatic tank at dp = 0.02 m (30 x 20 particles, ~6,000 steps), against
+// still weakly compressible water p(d) (tools/validation/still_water.h). Measured at this spacing
+// with the lattice-normalised kernel gradient and the exact hydrostatic density diffusion:
+// per-particle error 0.20 %, row-mean 0.16 %, bottom-quarter bias -0.10 % of rho0 g H, max speed
+// 0.008 % of sqrt(g H) (before those two changes: 3.9 %, 2.3 %, +0.7 %, 1.1 %). Bounds: the
+// issue-30 bias target 0.2 % itself; the others about 3x the measurement, far below the old
+// values, so a return of the lattice bias (+0.93 %) or the diffusion creep fails.
 TEST(Cases, HydrostaticTankStaysHydrostaticForTwoSeconds) {
   const auto run = run_case("hydrostatic_tank", {"run.dp=0.02", "run.output_interval=0.5"});
   ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
   const auto check = validation::check_hydrostatic(run.out);
   EXPECT_NEAR(check.time, 2.0, 1e-9);
   EXPECT_NEAR(check.depth, 0.6, 0.01);  // the column compresses by ~gH/(2c^2) only
-  EXPECT_LE(check.max_row_rel_error, 0.04);
-  EXPECT_LE(check.max_rel_error, 0.08);
-  EXPECT_LE(check.max_speed_ratio, 0.03);
+  EXPECT_LE(std::abs(check.bottom_quarter_bias), 0.002);
+  EXPECT_LE(check.max_row_rel_error, 0.005);
+  EXPECT_LE(check.max_rel_error, 0.006);
+  EXPECT_LE(check.max_speed_ratio, 3e-4);
+  // Against the incompressible rho0 g d the bias adds the water's own compression,
+  // p(d) - rho0 g d = rho0 g d^2 g / (2 c0^2): the mean of d^2 over the bottom quarter is
+  // (1 - 0.75^3) / (3 * 0.25) H^2 = 0.771 H^2, so 0.771 g H / (2 c0^2) = 0.384 % of rho0 g H
+  // (c0 = 24.3 m/s); measured 0.372 %. Tolerance 0.05 %: the particles sit at the row centres.
+  EXPECT_NEAR(check.bottom_quarter_bias_incompressible - check.bottom_quarter_bias,
+              0.771 * 9.81 * 0.6 / (2 * 24.3 * 24.3), 5e-4);
 }
 
 // The whole dam break at a/20 (20 x 40 particles): the surge front against Martin & Moyce (1952).

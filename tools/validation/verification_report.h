@@ -3,6 +3,7 @@
 // tools/validation/report.py reads (the format of validate_main.cpp's print_summary).
 #pragma once
 
+#include "tools/validation/still_water_check.h"
 #include "tools/validation/verification_checks.h"
 
 namespace porosph::validation {
@@ -11,5 +12,9 @@ namespace porosph::validation {
 int report_taylor_green(const TaylorGreenCheck& c);
 /// Prints the elastic column verdict; returns 0 when the targets are met, else 1.
 int report_elastic_column(const ElasticColumnCheck& c);
+/// Prints the hydrostatic tank verdict (per-row table when `rows`); 0 when the targets are met.
+int report_hydrostatic(const HydrostaticCheck& h, bool rows);
+/// Prints the still-bed verdict; 0 when the targets are met.
+int report_still_bed(const StillBedCheck& c);
 
 }  // namespace porosph::validation
