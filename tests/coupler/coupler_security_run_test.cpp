@@ -32,15 +32,13 @@ min = [0.1, 0.1]
 max = [0.2, 0.2]
 )";
 
-std::vector<std::string> run_argv(const std::string& dir, std::vector<std::string> extra) {
-  std::vector<std::string> argv = {bin("coupler"),
-                                   "run",
-                                   write_text(dir + "/scene.toml", kScene),
-                                   "--out",
-                                   dir + "/out",
-                                   "--fluid-solver",
-                                   bin("dummy_solver") + " --phase water",
-                                   "--no-progress"};
+std::vector<std::string> run_argv(const std::string& dir, std::vector<std::string> extra,
+                                  const std::string& solver = bin("dummy_solver") +
+                                                              " --phase water") {
+  std::vector<std::string> argv = {
+      bin("coupler"), "run",          write_text(dir + "/scene.toml", kScene),
+      "--out",        dir + "/out",   "--fluid-solver",
+      solver,         "--no-progress"};
   argv.insert(argv.end(), extra.begin(), extra.end());
   return argv;
 }
@@ -131,6 +129,22 @@ TEST(CouplerRunSecurity, HostNamesAndIpv6Listen) {
     const auto run_json = read_json(dir + "/out/run.json");
     EXPECT_EQ(run_json.at("transport").at("dropped_messages").get<int>(), 0);
   }
+}
+
+// Issue 29: the coupler's own solver exited and was ignored while another process, holding the
+// token, went on speaking for its phase. Here the started process hands the phase to a child and
+// exits 1 during the run: that fails the run at once, though states keep coming.
+TEST(CouplerRunSecurity, StartedSolverThatExitsFailsTheRunWhileMessagesFlow) {
+  const std::string dir = fresh_dir("started-exits");
+  const std::string script =
+      write_text(dir + "/solver.sh",
+                 "#!/bin/sh\n" + bin("dummy_solver") + " --phase water &\nsleep 0.3\nexit 1\n");
+  std::filesystem::permissions(script, std::filesystem::perms::owner_all);
+  const auto result =
+      run_process(run_argv(dir, {"--set", "run.end_time=20"}, script), dir + "/log.txt", 60);
+  EXPECT_EQ(result.exit_code, 1) << result.output;
+  EXPECT_NE(result.output.find("exited with code 1"), std::string::npos) << result.output;
+  EXPECT_LT(result.seconds, 15.0) << result.output;
 }
 
 // The default socket: in a private directory, gone after the run.
