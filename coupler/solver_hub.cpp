@@ -233,7 +233,10 @@ SolverHub::SolverHub(const std::string& endpoint, std::size_t max_frame_bytes)
   } catch (const zmq::error_t& e) {
     throw std::runtime_error("cannot set up the solver socket: " + std::string(e.what()));
   }
-  std::string port;  // of the first address, for the others of a host name bound to port 0
+  // A host name listens on each of its addresses that this machine has (localhost: 127.0.0.1,
+  // and ::1 where there is IPv6); it fails only when none can be bound.
+  std::string port;   // of the first bound address, for the others when bound to port 0
+  std::string error;  // the first bind failure
   for (std::string address : plan.endpoints) {
     if (!port.empty()) address = address.substr(0, address.rfind(':') + 1) + port;
     // The socket file is created by bind: private from its first moment, whatever the umask.
@@ -241,8 +244,9 @@ SolverHub::SolverHub(const std::string& endpoint, std::size_t max_frame_bytes)
     try {
       d.socket.bind(address);
     } catch (const zmq::error_t& e) {
+      if (error.empty()) error = e.what();
       if (!plan.ipc_path.empty()) ::umask(umask_before);
-      throw BadEndpoint("cannot listen for solvers on '" + endpoint + "': " + e.what());
+      continue;
     }
     if (!plan.ipc_path.empty()) ::umask(umask_before);
     if (bound.empty()) {
@@ -250,6 +254,7 @@ SolverHub::SolverHub(const std::string& endpoint, std::size_t max_frame_bytes)
       if (plan.ipc_path.empty()) port = bound.substr(bound.rfind(':') + 1);
     }
   }
+  if (bound.empty()) throw BadEndpoint("cannot listen for solvers on '" + endpoint + "': " + error);
   d.connect_endpoint = connectable(bound);
   if (!plan.ipc_path.empty()) {
     d.ipc_path = plan.ipc_path;
