@@ -10,11 +10,13 @@
 namespace porosph::testing {
 namespace {
 
-// Taylor-Green vortex at Re = 100 at dp = L/50 and L/100 (~4 s and ~25 s on one core). Measured
-// decay-rate errors: +5.49 % and +2.92 %; without particle shifting +125 % (the lattice breaks
-// down at t ~ 0.1 s). Bounds: the finer level within 3.5 % (the measured 2.92 % with a margin for
-// the OpenMP summation order; the 2 % is NOT met at these levels, docs/verification.md),
-// and the error must fall with refinement (a verdict whose error grows fails).
+// Taylor-Green vortex at Re = 100 at dp = L/50 and L/100 (~3 s and ~20 s on one core). Measured
+// decay-rate errors with the lattice-normalised gradient: +5.91 % and +3.73 % (plain kernel:
+// +5.49 % and +2.92 %: its Morris Laplacian was 1.9 % weak on the lattice, which hid part of an
+// excess dissipation from elsewhere; docs/verification.md); without particle shifting +125 % (the
+// lattice breaks down at t ~ 0.1 s). Bounds: the finer level within 4.5 % (the measured 3.73 % with
+// a margin for the OpenMP summation order; the 2 % is NOT met at these levels), and the
+// error must fall with refinement (a verdict whose error grows fails).
 TEST(VerificationCases, TaylorGreenDecayRateConverges) {
   // Each run's check before the next run (both use the case's run directory).
   const auto coarse = run_case("taylor_green", {"run.dp=0.02"});
@@ -24,26 +26,27 @@ TEST(VerificationCases, TaylorGreenDecayRateConverges) {
   ASSERT_EQ(fine.result.exit_code, 0) << fine.result.output;
   const auto f = validation::check_taylor_green(fine.out);
   EXPECT_NEAR(c.rate_analytic, 4 * 0.01 * 4 * M_PI * M_PI, 1e-12);
-  EXPECT_LT(std::abs(f.rel_error), 0.035) << "rate " << f.rate_simulated;
+  EXPECT_LT(std::abs(f.rel_error), 0.045) << "rate " << f.rate_simulated;
   EXPECT_LT(std::abs(f.rel_error), std::abs(c.rel_error));
   // ln E stays on a line (an exponential decay, no breakdown): measured 0.039 and 0.0075.
   EXPECT_LT(f.fit_residual, 0.02);
   EXPECT_NEAR(f.energy0, f.energy0_analytic, 1e-3 * f.energy0_analytic);
 }
 
-// Elastic column loaded suddenly by gravity at dp = 0.02 m for 3 periods (~3 s). Measured: period
-// +0.95 %, settlement +1.85 %, both the error of the cubic spline's gradient on the lattice at
-// h = 1.2 dp (sum_b V_b x_b dW/dx = 0.9908, squared 0.9817: the SPH column is 1.8 % softer, at
-// every dp; docs/verification.md). Bounds: the 3 %; a wrong modulus (plane stress, E for
-// M) would be off by 10 % or more. The soil must stay elastic (plastic strain exactly 0).
+// Elastic column loaded suddenly by gravity at dp = 0.02 m for 3 periods (~3 s). Measured (full
+// 5 periods): period +0.02 %, settlement -0.01 % with the lattice-normalised gradient; +0.95 % and
+// +1.85 % with the plain kernel, whose gradient on the lattice at h = 1.2 dp is 0.9908 short
+// (squared 0.9817: a 1.8 % softer column; docs/verification.md). Bounds: 0.5 %, which the plain
+// kernel's lattice error fails; a wrong modulus (plane stress, E for M) would be off by 10 % or
+// more. The soil must stay elastic (plastic strain exactly 0).
 TEST(VerificationCases, ElasticColumnPeriodAndSettlement) {
   const auto run = run_case("elastic_column", {"run.dp=0.02", "run.end_time=0.16"});
   ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
   const auto c = validation::check_elastic_column(run.out);
   EXPECT_EQ(c.max_plastic_strain, 0.0);
   EXPECT_GE(c.periods, 3u);
-  EXPECT_LT(std::abs(c.period_error), 0.03) << "period " << c.period_simulated;
-  EXPECT_LT(std::abs(c.settlement_error), 0.03) << "settlement " << c.settlement_simulated;
+  EXPECT_LT(std::abs(c.period_error), 0.005) << "period " << c.period_simulated;
+  EXPECT_LT(std::abs(c.settlement_error), 0.005) << "settlement " << c.settlement_simulated;
   EXPECT_TRUE(c.met());
 }
 
