@@ -2,6 +2,7 @@
 //   porosph_validate dam_break RUN_DIR [--reference cases/dam_break/reference.csv]
 //   porosph_validate hydrostatic_tank RUN_DIR
 //   porosph_validate still_bed RUN_DIR
+//   porosph_validate seepage_weir RUN_DIR [--window S]
 //   porosph_validate soil_column RUN_DIR
 //   porosph_validate granular_collapse RUN_DIR
 //   porosph_validate darcy_column RUN_DIR
@@ -227,6 +228,11 @@ int main(int argc, char** argv) {
   tank->add_flag("--rows", print_rows, "print the error of every lattice row");
   auto* still_bed = app.add_subcommand("still_bed", "still water over and in a porous bed: head");
   still_bed->add_option("run_dir", run_dir)->required();
+  auto* weir = app.add_subcommand("seepage_weir", "seepage under a weir vs the FV reference");
+  weir->add_option("run_dir", run_dir)->required();
+  double weir_window = 0.0;
+  weir->add_option("--window", weir_window, "averaging window at the end of the run [s]")
+      ->default_str("the last quarter");
   auto* column = app.add_subcommand("soil_column", "dry soil column: vertical stress, K0");
   column->add_option("run_dir", run_dir)->required();
   auto* collapse = app.add_subcommand("granular_collapse", "run-out, height, failure angle");
@@ -288,6 +294,7 @@ int main(int argc, char** argv) {
       return c.mean_abs_error <= 0.10 ? 0 : 1;
     }
     if (*still_bed) return v::report_still_bed(v::check_still_bed(run_dir));
+    if (*weir) return v::report_seepage_weir(v::check_seepage_weir(run_dir, weir_window));
     return v::report_hydrostatic(v::check_hydrostatic(run_dir), print_rows);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "porosph_validate: %s\n", e.what());

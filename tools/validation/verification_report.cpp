@@ -1,5 +1,6 @@
 #include "tools/validation/verification_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -113,6 +114,47 @@ int report_still_bed(const StillBedCheck& c) {
   summary("head bias in the bed's bottom quarter", fmt("%+.3f %%", 100 * c.head_bias),
           "free surface", fmt("%.3f %%", 100 * std::abs(c.head_bias)), "0.2 %", flat);
   return still && flat ? 0 : 1;
+}
+
+int report_seepage_weir(const SeepageWeirCheck& c) {
+  std::printf(
+      "seepage_weir: dp %.4g m, K = %.4g m/s; averaged over %zu outputs, t = %.3f .. %.3f s\n"
+      "pool heads (held by the reservoirs, measured): h1 = %.5f m, h2 = %.5f m, dh = %.5f m\n"
+      "discharge under the weir: %.5e m^2/s; FV reference %.5e m^2/s (q / (K dh) = %.5f, grid"
+      " order %.2f): error %+.2f%% (target 1%%)\n"
+      "exit gradient over %.3f m next to the weir: %.4f; reference %.4f: error %+.2f%% (target "
+      "3%%)\n",
+      c.dp, c.conductivity, c.outputs, c.window_start, c.window_end, c.head_upstream,
+      c.head_downstream, c.head_upstream - c.head_downstream, c.discharge, c.discharge_reference,
+      c.discharge_reference / (c.conductivity * (c.head_upstream - c.head_downstream)),
+      c.discharge_reference_order, 100 * c.discharge_error(), c.exit_stretch, c.exit_gradient,
+      c.exit_gradient_reference, 100 * c.exit_gradient_error());
+  double q_min = 1e300, q_max = -1e300;
+  for (double q : c.discharge_history) q_min = std::min(q_min, q), q_max = std::max(q_max, q);
+  std::printf("discharge over the window: %.5e .. %.5e m^2/s (steadiness %.2f%%)\n", q_min, q_max,
+              100 * (q_max - q_min) / c.discharge);
+  std::printf("%8s %8s %12s %12s %9s %10s %10s %9s\n", "x", "y", "p", "p_ref", "p err", "head",
+              "head_ref", "err/dh");
+  for (const auto& p : c.probes) {
+    std::printf("%8.3f %8.3f %12.2f %12.2f %8.3f%% %10.5f %10.5f %8.2f%%\n", p.x, p.y, p.pressure,
+                p.pressure_reference, 100 * p.relative_error(), p.head, p.head_reference,
+                100 * (p.head - p.head_reference) / (c.head_upstream - c.head_downstream));
+  }
+  // Targets of issue 30 item 5: discharge and pore pressures within 1 %, exit gradient within 3 %.
+  const bool q_met = std::abs(c.discharge_error()) <= 0.01;
+  const bool p_met = c.max_pressure_error() <= 0.01;
+  const bool i_met = std::abs(c.exit_gradient_error()) <= 0.03;
+  summary("discharge under the weir", fmt("%.5e m^2/s", c.discharge),
+          fmt("%.5e m^2/s (FV, grid-converged)", c.discharge_reference),
+          fmt("%+.2f %%", 100 * c.discharge_error()), "1 %", q_met);
+  summary("pore pressure at the probes (max)", fmt("%.3f %%", 100 * c.max_pressure_error()),
+          "FV head, still-water EOS", fmt("%.3f %%", 100 * c.max_pressure_error()), "1 %", p_met);
+  summary("head error at the probes / dh (max)", fmt("%.2f %%", 100 * c.max_head_error()),
+          "FV head", fmt("%.2f %%", 100 * c.max_head_error()), "-", -1);
+  summary("exit gradient next to the weir", fmt("%.4f", c.exit_gradient),
+          fmt("%.4f (FV)", c.exit_gradient_reference),
+          fmt("%+.2f %%", 100 * c.exit_gradient_error()), "3 %", i_met);
+  return q_met && p_met && i_met ? 0 : 1;
 }
 
 }  // namespace porosph::validation

@@ -3,6 +3,7 @@
 // tools/validation/report.py reads (the format of validate_main.cpp's print_summary).
 #pragma once
 
+#include "tools/validation/seepage_weir_check.h"
 #include "tools/validation/still_water_check.h"
 #include "tools/validation/verification_checks.h"
 
@@ -16,5 +17,7 @@ int report_elastic_column(const ElasticColumnCheck& c);
 int report_hydrostatic(const HydrostaticCheck& h, bool rows);
 /// Prints the still-bed verdict; 0 when the targets are met.
 int report_still_bed(const StillBedCheck& c);
+/// Prints the seepage-under-a-weir verdict; 0 when the targets are met.
+int report_seepage_weir(const SeepageWeirCheck& c);
 
 }  // namespace porosph::validation

@@ -1,0 +1,187 @@
+#include "tools/validation/seepage_weir_check.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "io/snapshot_reader.h"
+#include "tools/validation/grid_series.h"
+#include "tools/validation/laplace_fv.h"
+#include "tools/validation/run_directory.h"
+#include "tools/validation/still_water.h"
+
+namespace porosph::validation {
+
+namespace {
+
+struct Box {
+  double x0, y0, x1, y1;
+  bool contains(double x, double y) const { return x >= x0 && x <= x1 && y >= y0 && y <= y1; }
+};
+
+Box box_of(const nlohmann::json& entry, const std::string& what) {
+  if (entry.at("shape").get<std::string>() != "box")
+    throw std::runtime_error("seepage_weir: " + what + " must be a box");
+  const auto lo = entry.at("min").get<std::vector<double>>();
+  const auto hi = entry.at("max").get<std::vector<double>>();
+  if (lo.size() != 2) throw std::runtime_error("seepage_weir: a 2D scene is needed");
+  return {lo[0], lo[1], hi[0], hi[1]};
+}
+
+/// The reference in units of the head difference: phi = (h - h2) / (h1 - h2) on the layer with
+/// phi = 1 on the upstream top, 0 downstream, no flow under the weir; for K = 1: the discharge
+/// (the shape factor q / (K (h1 - h2))), the exit gradient and phi at the probes, each
+/// Richardson-extrapolated from a grid series (cells of 20, 10, 5, 2.5 mm).
+GridSeries unit_reference(const Box& layer, double weir_x0, double weir_x1, double stretch,
+                          const std::vector<std::pair<double, double>>& probes) {
+  std::vector<std::string> names = {"discharge", "exit_gradient"};
+  for (std::size_t k = 0; k < probes.size(); ++k) names.push_back("phi" + std::to_string(k));
+  const double base = 0.02;
+  return run_grid_series(names, 4, [&](int refinement) {
+    LaplaceProblem problem;
+    problem.x0 = layer.x0;
+    problem.x1 = layer.x1;
+    problem.y0 = layer.y0;
+    problem.y1 = layer.y1;
+    problem.cells_x = static_cast<int>(std::lround((layer.x1 - layer.x0) / base)) * refinement;
+    problem.cells_y = static_cast<int>(std::lround((layer.y1 - layer.y0) / base)) * refinement;
+    problem.conductivity = 1.0;
+    problem.fixed_heads.push_back({Side::kTop, layer.x0, weir_x0, 1.0});
+    problem.fixed_heads.push_back({Side::kTop, weir_x1, layer.x1, 0.0});
+    const LaplaceSolution solution = solve_laplace(problem);
+    std::vector<double> values = {
+        solution.discharge_across_vertical(0.5 * (weir_x0 + weir_x1), layer.y0, layer.y1),
+        solution.mean_outward_gradient(Side::kTop, weir_x1, weir_x1 + stretch)};
+    for (const auto& [x, y] : probes) values.push_back(solution.head(x, y));
+    return values;
+  });
+}
+
+}  // namespace
+
+double SeepageWeirCheck::max_pressure_error() const {
+  double worst = 0;
+  for (const auto& p : probes) worst = std::max(worst, std::abs(p.relative_error()));
+  return worst;
+}
+
+double SeepageWeirCheck::max_head_error() const {
+  double worst = 0;
+  for (const auto& p : probes) worst = std::max(worst, std::abs(p.head - p.head_reference));
+  return worst / (head_upstream - head_downstream);
+}
+
+SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
+  const auto run = read_run_json(run_dir);
+  const auto& parameters = run.at("parameters");
+  const auto& material = parameters.at("soil").at("materials").at(0);
+  if (material.at("seepage").get<std::string>() != "darcy_conductivity")
+    throw std::runtime_error("seepage_weir: the layer's seepage must be darcy_conductivity");
+  const Box layer = box_of(parameters.at("soil").at("blocks").at(0), "the first soil block");
+  const nlohmann::json* weir_entry = nullptr;
+  for (const auto& wall : parameters.at("walls"))
+    if (wall.value("label", "") == "weir") weir_entry = &wall;
+  if (weir_entry == nullptr) throw std::runtime_error("seepage_weir: no wall labelled 'weir'");
+  const Box weir = box_of(*weir_entry, "the weir");
+  const auto gravity = parameters.at("run").at("gravity").get<std::vector<double>>();
+  if (gravity.size() != 2 || gravity[0] != 0.0 || !(gravity[1] < 0.0))
+    throw std::runtime_error("seepage_weir: gravity must point along -y");
+  const auto& w = parameters.at("water");
+  const StillWater water{w.at("rho0").get<double>(), w.at("sound_speed").get<double>(),
+                         w.at("gamma").get<double>(), -gravity[1]};
+
+  SeepageWeirCheck out;
+  out.dp = parameters.at("run").at("dp").get<double>();
+  out.conductivity = material.at("hydraulic_conductivity").get<double>();
+  out.exit_stretch = 0.05 * (layer.x1 - weir.x1) / 0.5;  // 5 cm on the case's 0.5 m pool
+  const double dp = out.dp, margin = 2.0 * dp;
+  const double mid = 0.5 * (weir.x0 + weir.x1), depth = layer.y1 - layer.y0;
+  const std::vector<std::pair<double, double>> probe_points = {
+      {weir.x0 - 0.1, layer.y0 + 0.25 * depth}, {weir.x0, layer.y0 + 0.25 * depth},
+      {mid, layer.y0 + 0.25 * depth},           {weir.x1, layer.y0 + 0.25 * depth},
+      {weir.x1 + 0.1, layer.y0 + 0.25 * depth}, {mid, layer.y0 + 0.75 * depth}};
+
+  io::SnapshotReader reader(run_dir + "/fluid.h5");
+  const auto snapshots = reader.snapshots();
+  if (snapshots.size() < 2) throw std::runtime_error(run_dir + "/fluid.h5: too few snapshots");
+  out.window_end = snapshots.back().time;
+  out.window_start = out.window_end - (window > 0.0 ? window : 0.25 * out.window_end);
+  const Box upstream{layer.x0 + margin, layer.y1 + margin, weir.x0 - margin, 1e9};
+  const Box downstream{weir.x1 + margin, layer.y1 + margin, layer.x1 - margin, 1e9};
+  const Box under{weir.x0 + margin, layer.y0, weir.x1 - margin, layer.y1};
+  const Box exit{weir.x1, layer.y1 - dp, weir.x1 + out.exit_stretch, layer.y1};
+  std::vector<double> probe_p(probe_points.size(), 0.0), probe_h(probe_points.size(), 0.0);
+  double h1 = 0, h2 = 0, exit_gradient = 0;
+  for (const auto& snap : snapshots) {
+    if (snap.time < out.window_start - 1e-12) continue;
+    const auto x = reader.read_f64(snap.index, "position");
+    const auto v = reader.read_f64(snap.index, "velocity");
+    const auto p = reader.read_f64(snap.index, "pressure");
+    const auto rho = reader.read_f64(snap.index, "density");
+    const auto m = reader.read_f64(snap.index, "mass");
+    const auto fixed = reader.read_u8(snap.index, "fixed");
+    double top_up = -1e9, top_down = -1e9;
+    for (std::size_t i = 0; i < x.rows; ++i) {
+      if (fixed.values[i]) continue;
+      const double xi = x.values[2 * i], yi = x.values[2 * i + 1];
+      if (upstream.contains(xi, yi)) top_up = std::max(top_up, yi);
+      if (downstream.contains(xi, yi)) top_down = std::max(top_down, yi);
+    }
+    double sum_h1 = 0, sum_h2 = 0, flux = 0, exit_v = 0;
+    std::size_t n1 = 0, n2 = 0, n_exit = 0;
+    std::vector<double> pp(probe_points.size(), 0.0), ph(probe_points.size(), 0.0);
+    std::vector<std::size_t> pn(probe_points.size(), 0);
+    for (std::size_t i = 0; i < x.rows; ++i) {
+      if (fixed.values[i]) continue;
+      const double xi = x.values[2 * i], yi = x.values[2 * i + 1];
+      const double head = yi + water.pressure_head(p.values[i]);
+      if (upstream.contains(xi, yi) && yi < top_up - margin) sum_h1 += head, ++n1;
+      if (downstream.contains(xi, yi) && yi < top_down - margin) sum_h2 += head, ++n2;
+      if (under.contains(xi, yi)) flux += m.values[i] / rho.values[i] * v.values[2 * i];
+      if (exit.contains(xi, yi)) exit_v += v.values[2 * i + 1], ++n_exit;
+      for (std::size_t k = 0; k < probe_points.size(); ++k) {
+        if (std::abs(xi - probe_points[k].first) <= dp &&
+            std::abs(yi - probe_points[k].second) <= dp)
+          pp[k] += p.values[i], ph[k] += head, ++pn[k];
+      }
+    }
+    if (n1 == 0 || n2 == 0 || n_exit == 0)
+      throw std::runtime_error(
+          run_dir + ": an empty pool or exit region at t = " + std::to_string(snap.time));
+    h1 += sum_h1 / n1;
+    h2 += sum_h2 / n2;
+    out.discharge_history.push_back(flux / (under.x1 - under.x0));
+    exit_gradient += exit_v / n_exit / out.conductivity;
+    for (std::size_t k = 0; k < probe_points.size(); ++k) {
+      if (pn[k] == 0) throw std::runtime_error(run_dir + ": a probe without water");
+      probe_p[k] += pp[k] / pn[k];
+      probe_h[k] += ph[k] / pn[k];
+    }
+    ++out.outputs;
+  }
+  const double n = static_cast<double>(out.outputs);
+  out.head_upstream = h1 / n;
+  out.head_downstream = h2 / n;
+  for (double q : out.discharge_history) out.discharge += q / n;
+  out.exit_gradient = exit_gradient / n;
+
+  const GridSeries reference =
+      unit_reference(layer, weir.x0, weir.x1, out.exit_stretch, probe_points);
+  const double dh = out.head_upstream - out.head_downstream;
+  out.discharge_reference = out.conductivity * dh * reference.estimates[0].extrapolated;
+  out.discharge_reference_order = reference.estimates[0].order;
+  out.exit_gradient_reference = dh * reference.estimates[1].extrapolated;
+  for (std::size_t k = 0; k < probe_points.size(); ++k) {
+    SeepageProbe probe;
+    probe.x = probe_points[k].first;
+    probe.y = probe_points[k].second;
+    probe.pressure = probe_p[k] / n;
+    probe.head = probe_h[k] / n;
+    probe.head_reference = out.head_downstream + dh * reference.estimates[2 + k].extrapolated;
+    probe.pressure_reference = water.pressure(probe.head_reference - probe.y);
+    out.probes.push_back(probe);
+  }
+  return out;
+}
+
+}  // namespace porosph::validation

@@ -1,0 +1,57 @@
+// Confined seepage under a weir (cases/seepage_weir): the SPH run against the grid-converged
+// finite-volume solution of Laplace's equation on the same permeable layer (laplace_fv.h), with
+// the pool heads that the run itself holds.
+//
+// The layer is the scene's first soil block (a box, homogeneous K: seepage "darcy_conductivity");
+// the weir is the wall labelled "weir" (a box standing on the layer); gravity along -y. Upstream
+// pool: x below the weir, downstream pool: x beyond it. The reference problem: Laplace on the
+// layer, the top at the measured pool heads h1 (upstream) and h2 (downstream), no flow under the
+// weir, on the floor and the side walls.
+//
+// Measured on the SPH run, averaged over the outputs in the last `window` seconds:
+//   - pool heads h1, h2: mean of z + Phi(p)/g (still_water.h) over the water in each pool (2 dp
+//     away from the layer, the walls, the weir and the surface);
+//   - discharge q: sum V u_x / w over the water in the layer under the weir, x within the weir's
+//     width less 2 dp on each side (in this model the water velocity inside soil is the Darcy
+//     velocity, so q is its integral over the depth);
+//   - exit gradient: mean upward velocity / K of the water in the layer's top row over the stretch
+//     `exit_stretch` next to the weir's downstream face, against the FV mean upward gradient there;
+//   - pore pressure at probes (a box of +-dp): mean p against p(h_ref - z) of still weakly
+//     compressible water, and the head error over h1 - h2.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace porosph::validation {
+
+struct SeepageProbe {
+  double x = 0, y = 0;
+  double pressure = 0, pressure_reference = 0;  ///< [Pa]
+  double head = 0, head_reference = 0;          ///< [m]
+  double relative_error() const { return (pressure - pressure_reference) / pressure_reference; }
+};
+
+struct SeepageWeirCheck {
+  double window_start = 0, window_end = 0;        ///< [s]
+  std::size_t outputs = 0;                        ///< outputs averaged
+  double dp = 0, conductivity = 0;                ///< [m], K [m/s]
+  double head_upstream = 0, head_downstream = 0;  ///< h1, h2 measured [m]
+  double discharge = 0;                           ///< SPH q [m^2/s]
+  double discharge_reference = 0;                 ///< FV q, Richardson-extrapolated
+  double discharge_reference_order = 0;           ///< observed order of the FV series
+  double exit_gradient = 0, exit_gradient_reference = 0;
+  double exit_stretch = 0;  ///< [m]
+  std::vector<SeepageProbe> probes;
+  std::vector<double> discharge_history;  ///< q of each averaged output (steadiness)
+
+  double discharge_error() const { return discharge / discharge_reference - 1.0; }
+  double exit_gradient_error() const { return exit_gradient / exit_gradient_reference - 1.0; }
+  double max_pressure_error() const;  ///< max |relative_error()| over the probes
+  double max_head_error() const;      ///< max |head - head_reference| / (h1 - h2)
+};
+
+/// `window` <= 0: the last quarter of the run.
+SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window = 0.0);
+
+}  // namespace porosph::validation
