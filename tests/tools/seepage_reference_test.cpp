@@ -7,6 +7,7 @@
 #include "tools/validation/grid_series.h"
 #include "tools/validation/laplace_fv.h"
 #include "tools/validation/rectangular_dam.h"
+#include "tools/validation/rectangular_dam_exact.h"
 #include "tools/validation/sheet_pile.h"
 
 namespace porosph::testing {
@@ -116,6 +117,19 @@ TEST(RectangularDam, BaiocchisSolutionCarriesCharnyisDischargeAboveDupuitsParabo
   EXPECT_LT(s.exit_height(), s.free_surface(0.9 * dam.length));
   for (int j = 0; j <= 24; ++j)
     for (int i = 0; i <= 32; ++i) EXPECT_GE(s.w(i, j), 0.0);
+}
+
+// Polubarinova-Kochina's exact dam: its own boundary data, then Baiocchi's solution against it.
+TEST(RectangularDam, TheExactSolutionMeetsItsDataAndBaiocchisFreeSurface) {
+  const v::RectangularDam dam;
+  const v::RectangularDamExact exact(dam);
+  EXPECT_NEAR(exact.free_surface(0.0), 0.3, 1e-12);
+  EXPECT_NEAR(exact.free_surface(1e-9), 0.3, 1e-6);  // x(psi) reaches 0 at psi = pi/2: h1
+  EXPECT_GT(exact.exit_height(), dam.head_downstream);
+  EXPECT_NEAR(exact.exit_height(), 0.0921, 1e-4);  // docs/verification.md
+  const auto s = v::solve_rectangular_dam(dam, 64, 48);
+  for (double f : {0.25, 0.5, 0.75, 0.9})
+    EXPECT_NEAR(s.free_surface(f * dam.length), exact.free_surface(f * dam.length), 6e-4) << f;
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "tools/validation/rectangular_dam.h"
+#include "tools/validation/rectangular_dam_exact.h"
 #include "tools/validation/sheet_pile.h"
 
 namespace v = porosph::validation;
