@@ -21,6 +21,7 @@
 #include "coupler/progress_line.h"
 #include "coupler/run_directory.h"
 #include "coupler/run_record.h"
+#include "coupler/scene_check.h"
 #include "coupler/solver_hub.h"
 #include "coupler/solver_launch.h"
 #include "coupler/solver_process.h"
@@ -113,6 +114,8 @@ void RunSession::load_fresh_run() {
   record_.dimension = scene_.run.dimension;
   record_.end_time = scene_.run.end_time;
   record_.ledger = ConservationLedger(scene_.run.dimension);
+  const std::string too_big = size_gate(scene_, options_.out_dir, options_.force_size);
+  if (!too_big.empty()) throw BadInput("the run does not fit this machine: " + too_big);
   prepare_output_dir();
 }
 

@@ -21,6 +21,8 @@ struct RunOptions {
   /// --overwrite: a fresh run may replace the outputs of an earlier run in its directory (without
   /// it such a directory is refused, docs/reliability.md).
   bool overwrite = false;
+  /// --force-size: run even when the size estimate does not fit this machine (coupler/run_size.h).
+  bool force_size = false;
 };
 
 /// Exit codes of the contract (DESIGN.md section 6).

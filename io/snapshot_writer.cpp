@@ -105,6 +105,8 @@ FieldView field_view(const std::string& name, const std::vector<std::uint8_t>& v
 /// so that a reader never sees a half-written snapshot there. A failed write deletes it; a
 /// leftover of a killed process is deleted by the next writer.
 constexpr const char* kPartialGroup = "/partial_snapshot";
+/// Where unchanging fields live (one dataset each, hard-linked from every snapshot).
+constexpr const char* kStaticGroup = "/static";
 
 struct SnapshotWriter::Impl {
   std::string path;
@@ -158,6 +160,52 @@ const std::string& SnapshotWriter::path() const { return impl_->path; }
 
 namespace {
 
+/// Creates dataset `name` of `field` under `location` and writes its values.
+void write_dataset(hid_t location, const FieldView& field, FieldType field_type,
+                   const std::string& where) {
+  const hsize_t dims[2] = {static_cast<hsize_t>(field.rows), static_cast<hsize_t>(field.cols)};
+  const int rank = field.cols == 1 ? 1 : 2;
+  Hdf5Id space(H5Screate_simple(rank, dims, nullptr), H5Sclose,
+               where + ": cannot create dataspace");
+  const hid_t type = native_type(field_type);
+  Hdf5Id dataset(H5Dcreate2(location, field.name.c_str(), type, space.get(), H5P_DEFAULT,
+                            H5P_DEFAULT, H5P_DEFAULT),
+                 H5Dclose, where + ": cannot create dataset");
+  if (field.rows > 0) {
+    check_hdf5(H5Dwrite(dataset.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data_pointer(field)),
+               where + ": cannot write dataset");
+  }
+  dataset.close(where + ": cannot close dataset");
+}
+
+/// /static/<name> for an unchanging field: written on first use, else checked to have the
+/// field's shape and element type. Returns its path.
+std::string static_dataset(hid_t file, const FieldView& field, FieldType field_type,
+                           const std::string& where) {
+  if (H5Lexists(file, kStaticGroup, H5P_DEFAULT) <= 0) {
+    Hdf5Id group(H5Gcreate2(file, kStaticGroup, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                 where + ": cannot create " + kStaticGroup);
+  }
+  const std::string path = std::string(kStaticGroup) + "/" + field.name;
+  if (H5Lexists(file, path.c_str(), H5P_DEFAULT) <= 0) {
+    Hdf5Id group(H5Gopen2(file, kStaticGroup, H5P_DEFAULT), H5Gclose, where + ": cannot open");
+    write_dataset(group.get(), field, field_type, where + " (" + path + ")");
+    return path;
+  }
+  Hdf5Id dataset(H5Dopen2(file, path.c_str(), H5P_DEFAULT), H5Dclose, where + ": cannot open");
+  Hdf5Id space(H5Dget_space(dataset.get()), H5Sclose, where + ": cannot read the shape");
+  Hdf5Id type(H5Dget_type(dataset.get()), H5Tclose, where + ": cannot read the type");
+  hsize_t dims[2] = {0, 1};
+  const int rank = H5Sget_simple_extent_ndims(space.get());
+  if (rank >= 1 && rank <= 2) H5Sget_simple_extent_dims(space.get(), dims, nullptr);
+  if (rank != (field.cols == 1 ? 1 : 2) || dims[0] != field.rows ||
+      (rank == 2 && dims[1] != field.cols) || H5Tequal(type.get(), native_type(field_type)) <= 0) {
+    throw std::runtime_error(where + ": an unchanging field whose shape or type differs from " +
+                             path + "'s");
+  }
+  return path;
+}
+
 /// Writes a snapshot into kPartialGroup.
 void write_partial_group(hid_t file, double time, const std::vector<FieldView>& fields,
                          const std::vector<FieldType>& types, const std::string& where) {
@@ -175,19 +223,14 @@ void write_partial_group(hid_t file, double time, const std::vector<FieldView>& 
   for (std::size_t f = 0; f < fields.size(); ++f) {
     const FieldView& field = fields[f];
     const std::string field_where = where + "/" + field.name;
-    const hsize_t dims[2] = {static_cast<hsize_t>(field.rows), static_cast<hsize_t>(field.cols)};
-    const int rank = field.cols == 1 ? 1 : 2;
-    Hdf5Id space(H5Screate_simple(rank, dims, nullptr), H5Sclose,
-                 field_where + ": cannot create dataspace");
-    const hid_t type = native_type(types[f]);
-    Hdf5Id dataset(H5Dcreate2(group.get(), field.name.c_str(), type, space.get(), H5P_DEFAULT,
-                              H5P_DEFAULT, H5P_DEFAULT),
-                   H5Dclose, field_where + ": cannot create dataset");
-    if (field.rows > 0) {
-      check_hdf5(H5Dwrite(dataset.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data_pointer(field)),
-                 field_where + ": cannot write dataset");
+    if (!field.unchanging) {
+      write_dataset(group.get(), field, types[f], field_where);
+      continue;
     }
-    dataset.close(field_where + ": cannot close dataset");
+    const std::string target = static_dataset(file, field, types[f], field_where);
+    check_hdf5(H5Lcreate_hard(file, target.c_str(), group.get(), field.name.c_str(), H5P_DEFAULT,
+                              H5P_DEFAULT),
+               field_where + ": cannot link " + target);
   }
   group.close(where + ": cannot close group");
 }

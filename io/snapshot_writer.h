@@ -1,6 +1,10 @@
 // HDF5 particle snapshots in the layout pinned by DESIGN.md section 6:
 //   /snapshots/NNNNNN/            group per output (6-digit zero-padded index), attribute `time`
 //   /snapshots/NNNNNN/<field>     one dataset per field, one row per particle (N or N x cols)
+//   /static/<field>               an unchanging field (FieldView::unchanging), stored once; every
+//                                 snapshot's <field> is an HDF5 hard link to it, which every reader
+//                                 (h5py, ParaView through run.xdmf, io::SnapshotReader) opens as an
+//                                 ordinary dataset of that snapshot
 // The file is flushed after every snapshot so that a run that fails keeps every snapshot written.
 #pragma once
 
@@ -26,6 +30,9 @@ struct FieldView {
   const std::int64_t* i64 = nullptr;
   const std::uint8_t* u8 = nullptr;
   FieldType type = FieldType::FromPointer;
+  /// The field holds the same values in every snapshot of the file (a rigid skeleton's position,
+  /// its zero stress): the first write stores it as /static/<name>, every snapshot links it there.
+  bool unchanging = false;
 };
 
 /// Views of a row-major array of rows x cols values (rows = values.size() / cols); they set `type`,
@@ -50,9 +57,12 @@ class SnapshotWriter {
   SnapshotWriter& operator=(const SnapshotWriter&) = delete;
 
   /// Writes /snapshots/<index>/ with attribute time and one dataset per field, then flushes.
-  /// Dataset shape: (rows) if cols == 1 else (rows, cols); rows may be 0. All fields are validated
-  /// before anything is written. Throws std::runtime_error naming the file (and the field) if a
-  /// field is malformed, the index was already written, or HDF5 fails.
+  /// Dataset shape: (rows) if cols == 1 else (rows, cols); rows may be 0. An `unchanging` field is
+  /// written to /static/<name> the first time (also when the file was reopened for a resume
+  /// without it) and hard-linked afterwards; a later snapshot whose unchanging field has another
+  /// shape or type throws. All fields are validated before anything is written. Throws
+  /// std::runtime_error naming the file (and the field) if a field is malformed, the index was
+  /// already written, or HDF5 fails.
   void write(std::uint32_t index, double time, const std::vector<FieldView>& fields);
 
   const std::string& path() const;

@@ -149,10 +149,13 @@ std::vector<io::FieldView> RigidSoilSolver<D>::snapshot_fields() const {
   fields.push_back(f64_field("porosity", n, 1, S.porosity.data()));
   fields.push_back(f64_field("plastic_strain", n, 1, zero));
   fields.push_back(f64_field("displacement", n, D, zero));
-  fields.push_back(f64_field("saturation", n, 1, S.saturation.data()));
   fields.push_back(io::field_view("id", S.id));
   fields.push_back(io::field_view("material", S.material));
   fields.push_back(io::field_view("fixed", S.fixed));
+  // Everything above is the same at every output: soil.h5 stores it once, in /static, and links
+  // it from each snapshot (io/snapshot_writer.h). Only the two fields below change.
+  for (io::FieldView& f : fields) f.unchanging = true;
+  fields.push_back(f64_field("saturation", n, 1, S.saturation.data()));
   fields.push_back(f64_field("absorbed_impulse", n, D, n ? S.absorbed_impulse[0].data() : nullptr));
   return fields;
 }

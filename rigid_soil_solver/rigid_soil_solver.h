@@ -58,7 +58,8 @@ class RigidSoilSolver {
   /// coupler), as a message naming it; std::nullopt if there is none.
   std::optional<std::string> find_non_finite(std::int64_t* particle_id) const;
   /// position, velocity (0), density, stress (0, N x 9), porosity, plastic_strain (0),
-  /// displacement (0), saturation, id, material, fixed (1), absorbed_impulse (N x D).
+  /// displacement (0), id, material, fixed (1), all marked unchanging (stored once in soil.h5's
+  /// /static group, linked from every snapshot); saturation and absorbed_impulse (N x D).
   std::vector<io::FieldView> snapshot_fields() const;
 
   /// Stores the skeleton's arrays (saturation and absorbed impulse are its only changing state),

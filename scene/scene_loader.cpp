@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "scene/scene_internal.h"
+#include "scene/scene_sanity.h"
 
 namespace porosph::scene {
 namespace {
@@ -75,6 +76,7 @@ Scene load_scene_text(const std::string& text, const std::string& source_name,
   check_scene_consistency(root, dimension, errors);
 
   Scene scene = build_scene(root);
+  check_scene_sanity(root, scene, errors);
   scene.source_path = source_name;
   promote_integers(root, schema);
   std::ostringstream resolved;

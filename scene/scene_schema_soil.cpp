@@ -104,9 +104,11 @@ void add_soil_materials(SceneSchema& s) {
                             "soil, eq. 16); absent: not given (0 in the typed scene)."));
   s.keys.push_back(Key(m + "porosity", T::Float)
                        .fallback("0.4")
-                       .above(0)
-                       .below(1)
-                       .doc("Initial porosity n0 (eq. 18-20)."));
+                       .at_least(0.01)
+                       .at_most(0.99)
+                       .doc("Initial porosity n0 (eq. 18-20); within the range the soil solver "
+                            "clamps every porosity to (soil_solver/porosity.h), so that no value "
+                            "is changed silently."));
   s.keys.push_back(Key(m + "young_modulus", T::Float)
                        .unit("Pa")
                        .optional()

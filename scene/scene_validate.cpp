@@ -12,6 +12,9 @@
 namespace porosph::scene {
 namespace {
 
+/// The largest magnitude of an integer key (it must fit the int of the typed scene).
+constexpr double kIntLimit = 2147483647.0;
+
 bool is_number(const toml::node& n) { return n.is_integer() || n.is_floating_point(); }
 
 bool matches_format(const std::string& text, StringFormat format) {
@@ -238,6 +241,13 @@ class Validator {
     const double v = node.value<double>().value_or(0.0);
     if (!std::isfinite(v)) {  // TOML allows nan and inf; no key means either (issue 29)
       errors_.fail(&node, key, where + "must be a finite number, got " + format_number(v));
+      return;
+    }
+    // The typed scene holds integer keys in an int (max_steps: a long); a TOML integer is 64-bit.
+    if (spec.type == ValueType::Int && std::fabs(v) > kIntLimit) {
+      errors_.fail(&node, key,
+                   where + "must be at most " + format_number(kIntLimit) + " in magnitude, got " +
+                       format_number(v));
       return;
     }
     const bool below =

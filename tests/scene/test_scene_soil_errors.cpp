@@ -61,7 +61,7 @@ std::vector<ErrorCase> soil_error_cases() {
        "must be an identifier (letters, digits, '_'; not starting with a digit), got 'coarse "
        "gravel'"},
       {"porosity out of range", with(b, "porosity = 0.35", "porosity = 1"),
-       "soil.materials[0].porosity", "porosity = 1", "must be in (0, 1), got 1"},
+       "soil.materials[0].porosity", "porosity = 1", "must be in [0.01, 0.99], got 1"},
       {"poisson ratio 0.5", with(g, "poisson_ratio = 0.3", "poisson_ratio = 0.5"),
        "soil.materials[0].poisson_ratio", "poisson_ratio", "must be in (-1, 0.5), got 0.5"},
       {"friction angle 90", with(g, "friction_angle = 19.8", "friction_angle = 90"),

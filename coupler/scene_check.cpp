@@ -1,0 +1,43 @@
+#include "coupler/scene_check.h"
+
+#include "coupler/run_size.h"
+#include "scene/scene_loader.h"
+
+namespace porosph::coupler {
+namespace {
+
+std::string run_dir_of(const scene::Scene& scene, const std::string& out_dir) {
+  return out_dir.empty() ? "runs/" + scene.name : out_dir;
+}
+
+}  // namespace
+
+std::string size_gate(const scene::Scene& scene, const std::string& out_dir, bool force) {
+  if (force) return "";
+  return run_size_problem(scene, estimate_run_size(scene),
+                          machine_limits(run_dir_of(scene, out_dir)));
+}
+
+int check_scene(const CheckOptions& options, std::ostream& out, std::ostream& err) {
+  scene::Scene scene;
+  try {
+    scene = scene::load_scene_file(options.scene_path, options.overrides);
+  } catch (const scene::SceneError& e) {
+    err << "coupler: bad scene: " << e.what() << "\n";
+    return 2;
+  }
+  const RunSizeEstimate size = estimate_run_size(scene);
+  const std::string problem =
+      run_size_problem(scene, size, machine_limits(run_dir_of(scene, options.out_dir)));
+  if (!problem.empty() && !options.force_size) {
+    err << "coupler: the run does not fit this machine: " << problem << "\n";
+    return 2;
+  }
+  if (!problem.empty()) err << "coupler: warning (--force-size): " << problem << "\n";
+  out << "# " << options.scene_path << ": valid scene '" << scene.name << "' (phases:";
+  for (const auto& phase : scene.phases()) out << " " << phase;
+  out << ")\n# size: " << describe_run_size(size) << "\n" << scene.resolved_toml << "\n";
+  return 0;
+}
+
+}  // namespace porosph::coupler

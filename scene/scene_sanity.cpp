@@ -1,0 +1,157 @@
+// Whether a valid scene means something (issue 29): rules over the typed scene, after the schema
+// and the relations between keys. Each finds the key to blame and fails with file:line:key.
+//  - the derived quantities a solver computes stay finite and positive: |g|, the domain's extent,
+//    the water's pressure scale rho0 c^2, kinematic viscosity mu / rho0 and particle mass
+//    rho0 dp^D, each soil material's P-wave speed, the seepage law's inputs (a water viscosity > 0,
+//    gravity > 0, a grain diameter whose square does not underflow);
+//  - the output interval is not far below the expected time step (kMinOutputIntervalOverDt).
+#include "scene/scene_sanity.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+
+#include "scene/scene_internal.h"
+
+namespace porosph::scene {
+namespace {
+
+bool finite_positive(double v) { return std::isfinite(v) && v > 0.0; }
+
+/// Three significant digits, for estimates ("1.86e-05").
+std::string rounded(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", v);
+  return format_number(std::strtod(text, nullptr));
+}
+
+double norm_of(const std::vector<double>& v) {
+  double sum = 0.0;
+  for (double c : v) sum += c * c;
+  return std::sqrt(sum);
+}
+
+/// The fastest sound speed of the phases present [m/s].
+double fastest_sound_speed(const Scene& scene) {
+  double c = 0.0;
+  if (scene.water) c = std::max(c, scene.water->sound_speed);
+  if (scene.soil) c = std::max(c, scene.soil->effective_sound_speed());
+  return c;
+}
+
+class SanityChecker {
+ public:
+  SanityChecker(const toml::table& root, const Scene& scene, const ErrorContext& errors)
+      : root_(root), scene_(scene), errors_(errors) {}
+
+  void check() {
+    run();
+    if (scene_.water) water(*scene_.water);
+    if (scene_.soil)
+      for (std::size_t i = 0; i < scene_.soil->materials.size(); ++i)
+        material(scene_.soil->materials[i], "soil.materials[" + std::to_string(i) + "]");
+    output_interval();
+  }
+
+ private:
+  /// Fails at `key` (its line, if the scene has it).
+  [[noreturn]] void fail(const std::string& key, const std::string& message) const {
+    errors_.fail(root_.at_path(key).node(), key, message);
+  }
+
+  void run() const {
+    const double g = norm_of(scene_.run.gravity);
+    if (!std::isfinite(g))
+      fail("run.gravity", "its magnitude |g| overflows to " + format_number(g));
+    for (std::size_t k = 0; k < scene_.domain.min.size(); ++k) {
+      const double extent = scene_.domain.max[k] - scene_.domain.min[k];
+      if (!std::isfinite(extent))
+        fail("domain.max", std::string("the domain's extent along ") + axis_name(k) +
+                               " overflows to " + format_number(extent));
+    }
+  }
+
+  void water(const WaterPhase& w) const {
+    const double pressure_scale = w.rho0 * w.sound_speed * w.sound_speed;
+    if (!finite_positive(pressure_scale))
+      fail("water.sound_speed",
+           "the pressure scale rho0 c^2 = " + format_number(pressure_scale) +
+               " Pa is not a finite positive number (water.rho0 = " + format_number(w.rho0) + ")");
+    const double nu = w.viscosity / w.rho0;
+    if (!std::isfinite(nu) || (w.viscosity > 0.0 && !(nu > 0.0)))
+      fail("water.viscosity", "the kinematic viscosity mu / rho0 = " + format_number(nu) +
+                                  " m^2/s is out of the range of a double (water.rho0 = " +
+                                  format_number(w.rho0) + ")");
+    const double mass = w.rho0 * std::pow(scene_.run.dp, scene_.run.dimension);
+    if (!finite_positive(mass))
+      fail("run.dp",
+           "the water particle mass rho0 dp^" + std::to_string(scene_.run.dimension) + " = " +
+               format_number(mass) +
+               " kg is not a finite positive number (water.rho0 = " + format_number(w.rho0) + ")");
+  }
+
+  void material(const SoilMaterial& m, const std::string& key) const {
+    const double modulus = m.bulk_modulus + 4.0 * m.shear_modulus / 3.0;
+    const double speed = std::sqrt(modulus / m.density);
+    if (!finite_positive(speed)) {
+      const bool young = root_.at_path(key + ".young_modulus").node() != nullptr;
+      fail(key + (young ? ".young_modulus" : ".bulk_modulus"),
+           "the P-wave speed sqrt((K + 4G/3) / density) = " + format_number(speed) +
+               " m/s is not a finite positive number (K = " + format_number(m.bulk_modulus) +
+               " Pa, G = " + format_number(m.shear_modulus) +
+               " Pa, density = " + format_number(m.density) + " kg/m^3)");
+    }
+    if (m.seepage == "none" || !scene_.water) return;  // the law acts between water and soil
+    const std::string law = "seepage '" + m.seepage + "' of " + key;
+    if (!(norm_of(scene_.run.gravity) > 0.0))
+      fail("run.gravity", law + " needs gravity |g| > 0 (its unit weight gamma_w = rho0 |g|)");
+    const bool kozeny = m.seepage == "darcy_kozeny_carman";
+    if (kozeny || m.seepage == "forchheimer_den_adel") {
+      if (!(scene_.water->viscosity > 0.0))
+        fail("water.viscosity", law + " needs a water viscosity > 0 (its kinematic viscosity)");
+      const double d = kozeny ? m.effective_diameter : m.d15;
+      const std::string name = kozeny ? "effective_diameter" : "d15";
+      if (!finite_positive(d * d))
+        fail(key + "." + name, "its square " + format_number(d * d) +
+                                   " m^2 is not a finite positive number (" + law + ")");
+    }
+  }
+
+  void output_interval() const {
+    const double dt = expected_time_step(scene_);
+    if (scene_.run.output_interval >= kMinOutputIntervalOverDt * dt) return;
+    fail("run.output_interval",
+         "is " + format_number(scene_.run.output_interval) +
+             " s, far below the expected time step ~" + rounded(dt) +
+             " s (min of dt0, cfl h / c, the viscous and gravity limits): the coupler writes at "
+             "most one output per step, so every step would write a snapshot; give at least " +
+             rounded(kMinOutputIntervalOverDt * dt) + " s (run.dt0 for an output every step)");
+  }
+
+  const toml::table& root_;
+  const Scene& scene_;
+  const ErrorContext& errors_;
+};
+
+}  // namespace
+
+double expected_time_step(const Scene& scene) {
+  const RunSettings& r = scene.run;
+  const double h = scene.h();
+  double dt = r.dt0;
+  const double c = fastest_sound_speed(scene);
+  if (c > 0.0) dt = std::min(dt, r.cfl * h / c);
+  if (scene.water && scene.water->viscosity > 0.0)
+    dt = std::min(dt, r.viscous_coefficient * h * h * scene.water->rho0 / scene.water->viscosity);
+  const double g = norm_of(r.gravity);
+  if (g > 0.0) dt = std::min(dt, r.c_a * std::sqrt(h / g));
+  return dt;
+}
+
+void check_scene_sanity(const toml::table& root, const Scene& scene, const ErrorContext& errors) {
+  SanityChecker(root, scene, errors).check();
+}
+
+}  // namespace porosph::scene
