@@ -4,7 +4,7 @@
 //   coupler run --attach --endpoint tcp://HOST:PORT SCENE.toml
 //   coupler run --resume DIR          continue DIR's run from its latest checkpoint
 //   coupler status DIR                running / completed / failed / died (docs/reliability.md)
-//   coupler check SCENE.toml [--set ...]     validate only, print the resolved scene
+//   coupler check SCENE.toml [--set ...] [--out DIR] [--force-size]   validate, estimate the size
 //   coupler schema --markdown                the scene key reference (docs/scene.md)
 // clang-format on
 // Exit codes of run: 0 completed, 1 the run failed, 2 bad input (a busy or unwritable run
@@ -16,24 +16,8 @@
 
 #include "coupler/run_session.h"
 #include "coupler/run_status.h"
+#include "coupler/scene_check.h"
 #include "scene/scene_loader.h"
-
-namespace {
-
-int check_scene(const std::string& path, const std::vector<std::string>& overrides) {
-  try {
-    const auto scene = porosph::scene::load_scene_file(path, overrides);
-    std::cout << "# " << path << ": valid scene '" << scene.name << "' (phases:";
-    for (const auto& phase : scene.phases()) std::cout << " " << phase;
-    std::cout << ")\n" << scene.resolved_toml << "\n";
-    return porosph::coupler::kCompleted;
-  } catch (const porosph::scene::SceneError& e) {
-    std::fprintf(stderr, "coupler: bad scene: %s\n", e.what());
-    return porosph::coupler::kBadInput;
-  }
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"PoroSPH coupler: runs water and soil SPH solvers as coupled processes"};
@@ -64,12 +48,20 @@ int main(int argc, char** argv) {
                   "[IPv6], a host name or * (default: a fresh ipc:// socket in a private "
                   "directory; docs/protocol.md)");
   run->add_flag("--no-progress", no_progress, "do not print the progress line");
+  run->add_flag("--force-size", run_options.force_size,
+                "run even when the size estimate does not fit this machine (memory, disk, "
+                "snapshots; docs/reliability.md)");
 
-  std::string check_path;
-  std::vector<std::string> check_overrides;
-  auto* check = app.add_subcommand("check", "validate a scene and print it resolved");
-  check->add_option("scene", check_path, "scene file (TOML)")->required();
-  check->add_option("--set", check_overrides, "override a scene key: key=value (repeatable)");
+  porosph::coupler::CheckOptions check_options;
+  auto* check = app.add_subcommand(
+      "check", "validate a scene, print its size estimate and the resolved scene");
+  check->add_option("scene", check_options.scene_path, "scene file (TOML)")->required();
+  check->add_option("--set", check_options.overrides,
+                    "override a scene key: key=value (repeatable)");
+  check->add_option("--out", check_options.out_dir,
+                    "run directory whose disk the outputs must fit (default runs/<scene name>)");
+  check->add_flag("--force-size", check_options.force_size,
+                  "pass a scene whose size estimate does not fit this machine");
 
   std::string status_dir;
   auto* status = app.add_subcommand(
@@ -107,7 +99,7 @@ int main(int argc, char** argv) {
     run_options.progress = !no_progress;
     return porosph::coupler::run_scene(run_options);
   }
-  if (*check) return check_scene(check_path, check_overrides);
+  if (*check) return porosph::coupler::check_scene(check_options, std::cout, std::cerr);
   if (*status) {
     const auto report = porosph::coupler::run_status(status_dir);
     std::cout << report.text << "\n";
