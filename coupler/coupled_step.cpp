@@ -219,6 +219,7 @@ void CoupledStepLoop::send_commands(double dt, bool write_output, std::uint32_t 
     command.interaction_acceleration.clear();
     command.interaction_rate.clear();
     command.saturation.clear();
+    command.porosity.clear();
     command.other_region_min.clear();
     command.other_region_max.clear();
     if (interaction_) {
@@ -226,6 +227,8 @@ void CoupledStepLoop::send_commands(double dt, bool write_output, std::uint32_t 
       // The accelerations already hold the implicit drag over dt (finish_step): the solvers add
       // them explicitly, no rate is sent.
       interaction_->hand_over(soil, command.interaction_acceleration, command.saturation);
+      // The porosity the water sees is output only: sent with the snapshots it goes into.
+      if (!soil && write_output) interaction_->hand_over_porosity(command.porosity);
       overlap_region_for(states_.at(soil ? "water" : "soil"), scene_, command.other_region_min,
                          command.other_region_max);
     }

@@ -260,18 +260,28 @@ std::vector<io::XdmfPhaseSeries> xdmf_series(const RunRecord& record, const std:
       }
       continue;
     }
+    // The built-in water solver also writes the pore fields where the scene has soil; another
+    // water solver need not.
+    const bool pore_fields = phase == "water" && record.phases.count("soil") > 0 &&
+                             phase_record.solver_name == kBuiltInWaterSolverName;
     series.push_back({phase, phase_record.h5_file, record.dimension,
-                      snapshot_fields_of_phase(phase, record.dimension), phase_record.snapshots});
+                      snapshot_fields_of_phase(phase, record.dimension, pore_fields),
+                      phase_record.snapshots});
   }
   return series;
 }
 
-std::vector<io::XdmfField> snapshot_fields_of_phase(const std::string& phase, int dimension) {
+std::vector<io::XdmfField> snapshot_fields_of_phase(const std::string& phase, int dimension,
+                                                    bool pore_fields) {
   const std::size_t d = static_cast<std::size_t>(dimension);
   std::vector<io::XdmfField> fields = {{"velocity", d, "Float"}, {"density", 1, "Float"}};
   if (phase == "water") {  // fluid_solver/fluid_solver_output.cpp
     fields.push_back({"pressure", 1, "Float"});
     fields.push_back({"mass", 1, "Float"});
+    if (pore_fields) {
+      fields.push_back({"porosity", 1, "Float"});
+      fields.push_back({"pore_velocity", d, "Float"});
+    }
   }
   if (phase == "soil") {  // soil_solver/soil_output.h
     fields.push_back({"stress", 9, "Float"});

@@ -157,8 +157,14 @@ void write_run_json(const std::string& path, const RunRecord& record);
 std::vector<io::XdmfPhaseSeries> xdmf_series(const RunRecord& record, const std::string& out_dir,
                                              std::set<std::string>& phases_without_h5);
 
-/// The fields each built-in phase writes besides position (DESIGN.md section 6).
-std::vector<io::XdmfField> snapshot_fields_of_phase(const std::string& phase, int dimension);
+/// The fields each built-in phase writes besides position (DESIGN.md section 6); with
+/// `pore_fields` the water's porosity and pore_velocity too (the built-in water solver in a scene
+/// with soil, docs/water-in-soil.md).
+std::vector<io::XdmfField> snapshot_fields_of_phase(const std::string& phase, int dimension,
+                                                    bool pore_fields = false);
+
+/// The name the built-in water solver gives in its Hello (fluid_solver/main.cpp).
+inline constexpr const char* kBuiltInWaterSolverName = "porosph-fluid";
 
 /// The HDF5 file name of a phase in the run directory ("fluid.h5", "soil.h5").
 std::string h5_file_of_phase(const std::string& phase);

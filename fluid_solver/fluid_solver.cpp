@@ -46,7 +46,8 @@ FluidSolver<D>::FluidSolver(const scene::Scene& s)
       wendland_(sph::make_kernel<sph::WendlandC2<D>>(params_.h, s.run.dp,
                                                      s.run.kernel_gradient == "lattice")),
       damping_(DampingStage::from_scene(s)),
-      zones_(*s.water, params_.dp, damping_.duration()) {
+      zones_(*s.water, params_.dp, damping_.duration()),
+      pore_fields_(s.has_soil()) {
   if (s.run.kernel == "cubic_spline") {
     kernel_kind_ = KernelKind::CubicSpline;
   } else if (s.run.kernel == "wendland_c2") {

@@ -15,6 +15,7 @@
 #include "fluid_solver/fluid_params.h"
 #include "fluid_solver/fluid_particles.h"
 #include "fluid_solver/particle_shifting.h"
+#include "fluid_solver/pore_fields.h"
 #include "io/checkpoint_file.h"
 #include "io/snapshot_writer.h"
 #include "proto/coupling_client.h"
@@ -48,6 +49,10 @@ class FluidSolver {
   /// Adds accelerations (n*D, row-major) to the overlap particles of the last fill_state, same
   /// order. Throws std::invalid_argument on a size mismatch.
   void add_interaction(const std::vector<double>& acceleration);
+  /// The soil porosity around the overlap particles of the last fill_state (StepCommand.porosity,
+  /// sent before a snapshot; empty: no soil near), for the snapshot's `porosity` and
+  /// `pore_velocity` fields (scenes with soil; pore_fields.h). Throws on a size mismatch.
+  void set_porosity(const std::vector<double>& porosity);
   /// Modified Verlet step of the free water; prescribed motion of the inflow zones' particles and
   /// renewal of the zones (flow_zones.h); periodic wrap; removal of the water that left the domain
   /// or entered an outflow zone (counted in removed_count); none of this while the damping stage
@@ -58,8 +63,9 @@ class FluidSolver {
   /// "non-finite velocity of particle 123 (x = ...)" and *particle_id = 123, or std::nullopt when
   /// every position, velocity and density is finite.
   std::optional<std::string> find_non_finite(std::int64_t* particle_id) const;
-  /// position, velocity, density, pressure, id (i64), fixed (u8) of every particle incl. walls;
-  /// the views stay valid until the next compute_rates/advance.
+  /// position, velocity, density, pressure, mass, id (i64), fixed (u8) of every particle incl.
+  /// walls, and in scenes with soil porosity and pore_velocity (set_porosity); the views stay
+  /// valid until the next compute_rates/advance.
   std::vector<io::FieldView> snapshot_fields() const;
   /// The physics terms this solver evaluates for its scene (run.json phases.water.terms): the
   /// same predicates that select the compiled pair loop (fluid_rates.cpp) and the optional stages.
@@ -138,6 +144,7 @@ class FluidSolver {
   std::vector<std::uint8_t> keep_scratch_;
   std::vector<double> filter_scratch_;
   ParticleShiftingGradients<D> shifting_;  ///< of the latest rates (water.particle_shifting > 0)
+  mutable PoreFields<D> pore_fields_;      ///< porosity, pore velocity of the next snapshot
 };
 
 extern template class FluidSolver<2>;

@@ -64,12 +64,20 @@ std::vector<io::FieldView> FluidSolver<D>::snapshot_fields() const {
   fixed.u8 = P.fixed.data();
   fixed.type = io::FieldType::U8;
   fields.push_back(fixed);
+  pore_fields_.append_fields(fields, P.velocity);  // scenes with soil: porosity, pore_velocity
   return fields;
+}
+
+template <int D>
+void FluidSolver<D>::set_porosity(const std::vector<double>& porosity) {
+  pore_fields_.update(porosity, overlap_index_, particles_.velocity);
 }
 
 template std::optional<std::string> FluidSolver<2>::find_non_finite(std::int64_t*) const;
 template std::optional<std::string> FluidSolver<3>::find_non_finite(std::int64_t*) const;
 template std::vector<io::FieldView> FluidSolver<2>::snapshot_fields() const;
 template std::vector<io::FieldView> FluidSolver<3>::snapshot_fields() const;
+template void FluidSolver<2>::set_porosity(const std::vector<double>&);
+template void FluidSolver<3>::set_porosity(const std::vector<double>&);
 
 }  // namespace porosph::fluid

@@ -110,6 +110,9 @@ struct StepCommand {
   /// explicit drag).
   std::vector<double> interaction_rate;
   std::vector<double> saturation;  ///< soil only
+  /// Water only, with write_output: the soil porosity around each overlap particle (1 in free
+  /// water; empty: no soil near). Output only (docs/water-in-soil.md).
+  std::vector<double> porosity;
   std::vector<double> other_region_min, other_region_max;
   /// After advancing, write checkpoint `checkpoint_index` (>= 1) and confirm it in the next state.
   bool write_checkpoint = false;

@@ -9,7 +9,8 @@
 // find_non_finite(std::int64_t*), add_interaction(const std::vector<double>&), advance(double),
 // snapshot_fields(), time(), step(), write_checkpoint(io::CheckpointWriter&),
 // restore_checkpoint(const io::CheckpointReader&); a soil solver also
-// set_saturation(const std::vector<double>&).
+// set_saturation(const std::vector<double>&); a solver with set_porosity(const
+// std::vector<double>&) (the water solver) gets StepCommand.porosity before each snapshot.
 // Checkpoints (docs/checkpoints.md): a command with write_checkpoint makes the loop advance, then
 // write OUT/checkpoint/<phase>_NNNN.h5 (the solver's state plus the overlap zone of that command)
 // and confirm it in the next state; Setup.restore_checkpoint makes it restore one before the first
@@ -41,6 +42,23 @@ template <class Solver>
 struct has_set_saturation<Solver, std::void_t<decltype(std::declval<Solver&>().set_saturation(
                                       std::declval<const std::vector<double>&>()))>>
     : std::true_type {};
+
+/// True for a solver with set_porosity(const std::vector<double>&) (the water solver: the soil
+/// porosity around its overlap particles, for the snapshot it is about to write).
+template <class Solver, class = void>
+struct has_set_porosity : std::false_type {};
+template <class Solver>
+struct has_set_porosity<Solver, std::void_t<decltype(std::declval<Solver&>().set_porosity(
+                                    std::declval<const std::vector<double>&>()))>>
+    : std::true_type {};
+
+/// Writes the snapshot a command asks for, after handing a solver that takes it the command's
+/// porosity.
+template <class Solver>
+void write_snapshot(io::SnapshotWriter& writer, Solver& solver, const StepCommand& command) {
+  if constexpr (has_set_porosity<Solver>::value) solver.set_porosity(command.porosity);
+  writer.write(command.output_index, solver.time(), solver.snapshot_fields());
+}
 
 /// True for a solver with active_terms() (the names reported with the first state).
 template <class Solver, class = void>
@@ -181,13 +199,11 @@ int run_solver_loop_unguarded(CouplingClient& client, Solver& solver, io::Snapsh
 
     const StepCommand& command = client.receive_command();
     if (command.stop) {
-      if (command.write_output)
-        writer.write(command.output_index, solver.time(), solver.snapshot_fields());
+      if (command.write_output) write_snapshot(writer, solver, command);
       break;
     }
     timed([&] {
-      if (command.write_output)
-        writer.write(command.output_index, solver.time(), solver.snapshot_fields());
+      if (command.write_output) write_snapshot(writer, solver, command);
       overlap_min = command.other_region_min;
       overlap_max = command.other_region_max;
       if (!command.interaction_acceleration.empty()) {

@@ -91,7 +91,8 @@ std::size_t CommandFrame::prepare(const coupling::StepCommand& c) {
                 packed_doubles_bytes(10, c.other_region_max.size()) +
                 varint_field_bytes(11, c.write_checkpoint ? 1 : 0) +
                 varint_field_bytes(12, c.checkpoint_index) +
-                packed_doubles_bytes(13, c.interaction_rate.size());
+                packed_doubles_bytes(13, c.interaction_rate.size()) +
+                packed_doubles_bytes(14, c.porosity.size());
   return delimited_bytes(Envelope::kCommandFieldNumber, body_bytes_);
 }
 
@@ -113,7 +114,8 @@ void CommandFrame::write(std::uint8_t* p) const {
   p = doubles(10, c.other_region_max, p);
   p = write_varint_field(11, c.write_checkpoint ? 1 : 0, p);
   p = write_varint_field(12, c.checkpoint_index, p);
-  doubles(13, c.interaction_rate, p);
+  p = doubles(13, c.interaction_rate, p);
+  doubles(14, c.porosity, p);
 }
 
 bool envelope_body(const void* data, std::size_t size, int field, const std::uint8_t** body,
@@ -250,6 +252,7 @@ bool read_command_body(const std::uint8_t* data, std::size_t size, coupling::Ste
   out.interaction_acceleration.clear();
   out.interaction_rate.clear();
   out.saturation.clear();
+  out.porosity.clear();
   out.other_region_min.clear();
   out.other_region_max.clear();
   for (;;) {
@@ -303,6 +306,9 @@ bool read_command_body(const std::uint8_t* data, std::size_t size, coupling::Ste
         break;
       case 13:
         ok = read_packed_doubles(in, type, out.interaction_rate);
+        break;
+      case 14:
+        ok = read_packed_doubles(in, type, out.porosity);
         break;
       default:
         ok = WireFormatLite::SkipField(&in, tag);

@@ -138,6 +138,7 @@ InteractionSummary SoilWaterInteraction::compute(const coupling::StepState& wate
     out_.water_acceleration.clear();
     out_.soil_acceleration.clear();
     out_.saturation.clear();
+    out_.water_porosity.clear();
     return {};
   }
   forces_ = !(time < damping_duration_);

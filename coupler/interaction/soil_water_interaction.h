@@ -42,6 +42,9 @@ struct InteractionOutputs {
   std::vector<double> water_acceleration;  ///< n_water x D, order of water.overlap_id; empty: none
   std::vector<double> soil_acceleration;   ///< n_soil x D, order of soil.overlap_id; empty: none
   std::vector<double> saturation;          ///< s_i per soil overlap particle; empty: none
+  /// n_a = 1 - sum_i V_i (1 - n_i) W_ia per water overlap particle, clamped to [0, 1]: the soil
+  /// porosity the water sees (1 in free water); empty: none. Output only (StepCommand.porosity).
+  std::vector<double> water_porosity;
   /// The drag's rate lambda = -d a / d v_own [1/s] per overlap particle (coupling.implicit_drag;
   /// empty: off or no force): lambda_a = sum_i V_i c_ia W_ia / rho_a and lambda_i = sum_a V_a
   /// c_ia W_ia / rho_i^s, c_ia = gamma_w (a + 2 b |v_r|) the derivative of eq. 13 along v_r.
@@ -110,6 +113,9 @@ class SoilWaterInteraction {
     acceleration.swap(soil ? out_.soil_acceleration : out_.water_acceleration);
     if (soil) saturation.swap(out_.saturation);
   }
+  /// Hands the water's porosity of the last compute (InteractionOutputs::water_porosity) to a
+  /// step command, by swapping buffers like hand_over().
+  void hand_over_porosity(std::vector<double>& porosity) { porosity.swap(out_.water_porosity); }
   /// The interaction terms of the scene (run.json interaction.terms; interaction_terms()).
   const std::vector<std::string>& terms() const { return terms_; }
 

@@ -101,8 +101,9 @@ class SoilWaterSums final : public InteractionEngine {
     Vec position;
     Vec velocity;
     double volume = 0.0;
-    double a = 0.0, b = 0.0;  ///< gamma_w a, gamma_w b of eq. 13: 0 where no seepage acts (the
-                              ///< law is "none", or only the saturation is asked)
+    double a = 0.0, b = 0.0;    ///< gamma_w a, gamma_w b of eq. 13: 0 where no seepage acts (the
+                                ///< law is "none", or only the saturation is asked)
+    double solid_volume = 0.0;  ///< V_i (1 - n_i): its grains' volume (the water's porosity)
   };
 
   /// Copies what the pair loop needs of each soil particle (in the soil set's order).
@@ -117,6 +118,7 @@ class SoilWaterSums final : public InteractionEngine {
       d.position = Eigen::Map<const Vec>(soil.overlap_position.data() + i * D);
       d.velocity = Eigen::Map<const Vec>(soil.overlap_velocity.data() + i * D);
       d.volume = soil.overlap_mass[i] / soil.overlap_density[i];
+      d.solid_volume = d.volume * (1.0 - soil.overlap_porosity[i]);
       const SeepageLaw& law = p_.materials[soil.overlap_material[i]].law;
       const soil::SeepageCoefficients c = forces && law.active()
                                               ? law.coefficients(soil.overlap_porosity[i])
@@ -147,6 +149,7 @@ class SoilWaterSums final : public InteractionEngine {
     } else {
       out.water_acceleration.clear();
     }
+    out.water_porosity.resize(water.overlap_id.size());
     if (rates) {
       out.water_rate.resize(water.overlap_id.size());
       near_thread_.resize(water.overlap_id.size());
@@ -186,8 +189,9 @@ class SoilWaterSums final : public InteractionEngine {
         const Vec v_a = Eigen::Map<const Vec>(water.overlap_velocity.data() + a * D);
         const double rho_a = water.overlap_density[a];
         const double volume_a = water.overlap_mass[a] / rho_a;
-        Vec sum = Vec::Zero();  // sum_i V_i f_ia W_ia
-        double rate_sum = 0.0;  // sum_i V_i c_ia W_ia
+        Vec sum = Vec::Zero();   // sum_i V_i f_ia W_ia
+        double rate_sum = 0.0;   // sum_i V_i c_ia W_ia
+        double solid_sum = 0.0;  // sum_i V_i (1 - n_i) W_ia
         // Distinct arrays: the soil rows written here alias neither the pair data nor the
         // kernel values, which lets the compiler keep each pair's values in registers.
         double* __restrict soil_rows = acc.data();
@@ -207,7 +211,9 @@ class SoilWaterSums final : public InteractionEngine {
           soil_sums[D + 1] += weight * rate;
           sum += (soil_i.volume * kernel_w[c]) * f;
           rate_sum += soil_i.volume * kernel_w[c] * rate;
+          solid_sum += soil_i.solid_volume * kernel_w[c];
         }
+        out.water_porosity[a] = std::clamp(1.0 - solid_sum, 0.0, 1.0);
         if (!forces) continue;
         const Vec acceleration = -sum / rho_a;
         if (rates) out.water_rate[a] = rate_sum / rho_a;

@@ -94,6 +94,7 @@ TEST(WireConvert, StepCommandSetupAndTimingSurviveSerialisation) {
   command.stop = true;
   command.interaction_acceleration = {1, -2, 3, -4};
   command.saturation = {0.5, 1.0};
+  command.porosity = {0.4, 0.7};
   command.other_region_min = {0, 0};
   command.other_region_max = {1, 2};
   command.write_checkpoint = true;
@@ -111,6 +112,7 @@ TEST(WireConvert, StepCommandSetupAndTimingSurviveSerialisation) {
   EXPECT_TRUE(back.stop);
   EXPECT_EQ(back.interaction_acceleration, command.interaction_acceleration);
   EXPECT_EQ(back.saturation, command.saturation);
+  EXPECT_EQ(back.porosity, command.porosity);
   EXPECT_EQ(back.other_region_min, command.other_region_min);
   EXPECT_EQ(back.other_region_max, command.other_region_max);
   EXPECT_TRUE(back.write_checkpoint);

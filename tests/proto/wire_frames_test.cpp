@@ -51,6 +51,7 @@ coupling::StepCommand sample_command() {
   c.interaction_acceleration = {1, -2, 3, -4};
   c.interaction_rate = {10, 20};
   c.saturation = {0.5, 1.0};
+  c.porosity = {0.4, 1.0};
   c.other_region_min = {0, 0};
   c.other_region_max = {1, 1};
   c.write_checkpoint = true;
@@ -158,6 +159,7 @@ TEST(WireFrames, CommandFramesAreTheGeneratedBytesAndReadBack) {
     EXPECT_EQ(out.interaction_acceleration, c.interaction_acceleration);
     EXPECT_EQ(out.interaction_rate, c.interaction_rate);
     EXPECT_EQ(out.saturation, c.saturation);
+    EXPECT_EQ(out.porosity, c.porosity);
     EXPECT_EQ(out.other_region_min, c.other_region_min);
     EXPECT_EQ(out.other_region_max, c.other_region_max);
     EXPECT_EQ(out.write_checkpoint, c.write_checkpoint);

@@ -67,6 +67,32 @@ TEST(RigidSoilRun, DarcyColumnFollowsDarcysLaw) {
   const double ledger_y = ledger.at("impulse_to_soil").at(1).get<double>();
   EXPECT_LT(ledger_y, 0.0);  // the water drags the skeleton down
   EXPECT_NEAR(booked_y, ledger_y, 1e-9 * std::abs(ledger_y));
+
+  // soil.h5 keeps the unchanging skeleton once, in /static, linked from every snapshot; only the
+  // saturation and the absorbed impulse are stored per snapshot.
+  EXPECT_TRUE(soil.exists("/static/position"));
+  EXPECT_TRUE(soil.exists("/static/stress"));
+  EXPECT_FALSE(soil.exists("/static/saturation"));
+  EXPECT_FALSE(soil.exists("/static/absorbed_impulse"));
+
+  // fluid.h5 (docs/water-in-soil.md): the bed fills the periodic box, so the water sees the bed's
+  // porosity 0.4 everywhere (to the kernel sum's error); its velocity is the Darcy velocity q and
+  // pore_velocity = q / n, whose mean is the Darcy velocity over n0.
+  io::SnapshotReader fluid(run.out + "/fluid.h5");
+  const auto water_last = fluid.snapshots().back().index;
+  const auto porosity = fluid.read_f64(water_last, "porosity").values;
+  const auto velocity = fluid.read_f64(water_last, "velocity").values;
+  const auto pore = fluid.read_f64(water_last, "pore_velocity");
+  ASSERT_EQ(pore.cols, 2u);
+  ASSERT_EQ(pore.rows, porosity.size());
+  double q_y = 0.0, u_y = 0.0;
+  for (std::size_t a = 0; a < porosity.size(); ++a) {
+    ASSERT_NEAR(porosity[a], 0.4, 0.01) << a;
+    ASSERT_DOUBLE_EQ(pore.values[2 * a + 1], velocity[2 * a + 1] / porosity[a]) << a;
+    q_y += velocity[2 * a + 1];
+    u_y += pore.values[2 * a + 1];
+  }
+  EXPECT_NEAR(u_y / q_y, 1.0 / 0.4, 0.03);
 }
 
 /// cases/darcy_column/scene.toml with `key_line` added to its [soil] table, in a fresh folder.
