@@ -343,7 +343,13 @@ def main():
               "Machine: 2-core shared VM, Debian 12, g++ 12 Release build (docs/performance.md). "
               "The wall times are those of the runs below, most of them made while 3-5 runs "
               "shared the two cores: they rank the cases, they are not throughput figures "
-              "(those are in docs/performance.md).",
+              "(those are in docs/performance.md).", "",
+              "Model version: the rows of dam_break, hydrostatic_tank, soil_column, "
+              "granular_collapse, darcy_column and fluidized_bed were rerun on 2026-12-04 with "
+              "the lattice-normalised kernel gradient and the exact hydrostatic density diffusion "
+              "(docs/verification.md, \"Still water\"); the rockfill, heave and Forchheimer rows "
+              "predate that change (and the rockfill rows the pairwise implicit drag) until they "
+              "are rerun.",
               ""]
     grid_cases = [c["name"] for c in CASES if c["name"].startswith(("heave_s", "heave_fr_s"))]
     rockfill_cases = {c["name"] for c in CASES if c["check"] == "rockfill_overtopping"}
