@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -189,24 +190,47 @@ double mean_field(const ParticleView<D>& p, ParticleField field, const Region<D>
   return observables_detail::nan();
 }
 
-/// Shepard-interpolated pressure at `point`: sum_i p_i W_i / sum_i W_i over the particles within
-/// the kernel support; NaN if there is none or the phase has no pressure. (Minimum image is not
-/// applied: probes are meant to be away from periodic faces.)
+/// Pressure at `point` from the particles within the kernel support, first-order accurate
+/// (docs/water-in-soil.md, "Pressure probes"): the linear moving-least-squares fit
+/// p(x) ~ a + b . (x - point) minimising sum_i W_i (p_i - a - b . (x_i - point))^2, whose a is
+/// exact for any linear pressure field whatever the stencil's shape (a probe beside a wall or a
+/// free surface sees a one-sided stencil). Where the stencil cannot fix a slope (fewer than D + 1
+/// particles, or all on a line: the moment matrix's reciprocal condition number below 1e-6), the
+/// Shepard value sum_i p_i W_i / sum_i W_i, which is the pressure at the stencil's weighted
+/// centroid rather than at the point. NaN if no particle is within the support or the phase has no
+/// pressure. (Minimum image is not applied: probes are meant to be away from periodic faces.)
 template <int D, class Kernel>
 double pressure_at(const ParticleView<D>& p, const Vec<D>& point, const Kernel& kernel) {
   if (p.pressure == nullptr) return observables_detail::nan();
-  double sum_pw = 0.0, sum_w = 0.0;
-  const double support2 = kernel.support() * kernel.support();
+  // Moments in coordinates scaled by the support: M = sum W [1 d^T; d d d^T], r = sum W p [1; d].
+  constexpr int K = D + 1;
+  double m[K * K] = {}, r[K] = {};
+  const double support = kernel.support();
+  const double support2 = support * support;
   const std::int64_t n = static_cast<std::int64_t>(p.count);
-#pragma omp parallel for reduction(+ : sum_pw, sum_w) schedule(static)
+#pragma omp parallel for reduction(+ : m[:K * K], r[:K]) schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
-    const double r2 = (p.position[i] - point).squaredNorm();
+    const Vec<D> dx = p.position[i] - point;
+    const double r2 = dx.squaredNorm();
     if (r2 >= support2) continue;
     const double w = kernel.w(std::sqrt(r2));
-    sum_pw += p.pressure[i] * w;
-    sum_w += w;
+    double basis[K];
+    basis[0] = 1.0;
+    for (int k = 0; k < D; ++k) basis[k + 1] = dx[k] / support;
+    for (int a = 0; a < K; ++a) {
+      r[a] += w * p.pressure[i] * basis[a];
+      for (int b = 0; b < K; ++b) m[a * K + b] += w * basis[a] * basis[b];
+    }
   }
-  return sum_w > 0.0 ? sum_pw / sum_w : observables_detail::nan();
+  if (!(m[0] > 0.0)) return observables_detail::nan();
+  const double shepard = r[0] / m[0];
+  const Eigen::Matrix<double, K, K> moments = Eigen::Map<const Eigen::Matrix<double, K, K>>(m);
+  const Eigen::Matrix<double, K, 1> rhs = Eigen::Map<const Eigen::Matrix<double, K, 1>>(r);
+  const Eigen::JacobiSVD<Eigen::Matrix<double, K, K>> svd(
+      moments, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const auto& sigma = svd.singularValues();
+  if (!(sigma[K - 1] > 1e-6 * sigma[0])) return shepard;
+  return svd.solve(rhs)[0];
 }
 
 }  // namespace porosph::sph

@@ -67,7 +67,8 @@ TEST(SphObservables, HandMadeSet) {
 
 TEST(SphObservables, PressureAtIsShepardInterpolated) {
   // Probe at (0.5, 0.25) with h = 0.5 (support 1): particles 0 and 1 at r = 0.559, particle 2 at
-  // r = 1.75 outside. Equal weights -> p = (100 + 200) / 2.
+  // r = 1.75 outside. Equal weights -> p = (100 + 200) / 2. (Two particles cannot fix a 2D slope:
+  // pressure_at falls back to Shepard; its linear fit: tests/sph/pressure_probe_test.cpp.)
   const ThreeParticles s;
   const CubicSpline<2> kernel(0.5);
   const auto probe = prepare_observable<2>(make("pressure_at", {}, {}, {0.5, 0.25}));
