@@ -166,11 +166,24 @@ void CoupledStepLoop::absorb_state(const std::string& phase, coupling::StepState
   phase_record.reported.wall_seconds += d.wall_seconds;
   phase_record.reported.physics_seconds += d.physics_seconds;
   phase_record.reported.communication_seconds += d.communication_seconds;
+  if (phase == "water" && scene_.water) {  // coupler/run_watch.h; the limit: sph/mach_watch.h
+    const std::string warning = note_mach(record_.mach, d.max_speed, scene_.water->sound_speed,
+                                          record_.time, record_.steps);
+    if (!warning.empty()) std::fprintf(stderr, "coupler: %s\n", warning.c_str());
+  }
   for (const auto& observable : scene_.observables) {
     if (observable.phase != phase) continue;
     const auto it = d.observables.find(observable.name);
     record_.observables[observable.name] =
         it == d.observables.end() ? std::numeric_limits<double>::quiet_NaN() : it->second;
+    const std::string problem =
+        it == d.observables.end() ? "" : observable_problem(observable, it->second, d.free_count);
+    if (!problem.empty()) {
+      std::ostringstream msg;
+      msg << "the " << phase << " solver reported " << problem << " at step " << record_.steps
+          << ", t = " << record_.time << " s";
+      throw std::runtime_error(msg.str());
+    }
   }
 }
 

@@ -225,6 +225,12 @@ void write_run_json(const std::string& path, const RunRecord& r) {
   json observables = json::object();
   for (const auto& [name, value] : r.observables) observables[name] = number(value);
   out["observables"] = observables;
+  if (r.phases.count("water"))
+    out["mach"] = {{"max", number(r.mach.max)},
+                   {"time", number(r.mach.time)},
+                   {"step", r.mach.step},
+                   {"warn_above", scene::kMachWarn},
+                   {"limit", scene::kMachLimit}};
   out["resumes"] = r.resumes;
   out["checkpoint"] = r.checkpoint_index == 0 ? json(nullptr)
                                               : json{{"index", r.checkpoint_index},

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "coupler/run_watch.h"
 #include "io/xdmf_writer.h"
 #include "proto/coupling_client.h"
 
@@ -116,6 +117,7 @@ struct RunRecord {
   ConservationLedger ledger;
   InteractionRecord interaction;
   std::map<std::string, double> observables;  ///< latest value of every observable
+  MachRecord mach;            ///< the water's largest Mach number (coupler/run_watch.h)
   std::uint32_t resumes = 0;  ///< times this run was resumed from a checkpoint (--resume)
   /// Payload bytes of the messages of the step loop (states, errors, goodbyes received; commands
   /// sent), without ZeroMQ's framing: the coupling's data volume.

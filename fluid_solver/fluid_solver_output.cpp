@@ -1,8 +1,10 @@
-// FluidSolver's read-only reports: the non-finite check and the snapshot fields.
+// FluidSolver's read-only reports: the non-finite check (with the Mach limit) and the snapshot
+// fields.
 #include <algorithm>
 #include <cmath>
 
 #include "fluid_solver/fluid_solver.h"
+#include "sph/mach_watch.h"
 #include "sph/non_finite_report.h"
 
 namespace porosph::fluid {
@@ -15,7 +17,9 @@ std::optional<std::string> FluidSolver<D>::find_non_finite(std::int64_t* particl
   if (values == 0 || (sph::all_finite(P.position.data()->data(), values) &&
                       sph::all_finite(P.velocity.data()->data(), values) &&
                       sph::all_finite(P.density.data(), P.size()))) {
-    return std::nullopt;
+    // A finite state may still leave the weakly compressible model (sph/mach_watch.h).
+    return sph::find_mach_violation<D>(P.position, P.velocity, P.fixed, P.id, params_.eos.c0(),
+                                       step_, time_, particle_id);
   }
   std::int64_t first = n;
 #pragma omp parallel for schedule(static) reduction(min : first)

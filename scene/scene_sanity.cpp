@@ -4,6 +4,8 @@
 //    the water's pressure scale rho0 c^2, kinematic viscosity mu / rho0 and particle mass
 //    rho0 dp^D, each soil material's P-wave speed, the seepage law's inputs (a water viscosity > 0,
 //    gravity > 0, a grain diameter whose square does not underflow);
+//  - a speed the scene prescribes to water (inflow zones, the Taylor-Green field) stays below
+//    Mach kMachLimit;
 //  - the output interval is not far below the expected time step (kMinOutputIntervalOverDt).
 #include "scene/scene_sanity.h"
 
@@ -84,12 +86,30 @@ class SanityChecker {
       fail("water.viscosity", "the kinematic viscosity mu / rho0 = " + format_number(nu) +
                                   " m^2/s is out of the range of a double (water.rho0 = " +
                                   format_number(w.rho0) + ")");
+    for (std::size_t i = 0; i < w.inflows.size(); ++i) {
+      const std::string key = "water.inflow[" + std::to_string(i) + "]";
+      const bool given = root_.at_path(key + ".velocity").node() != nullptr;
+      prescribed_speed(w.inflows[i].speed, key + (given ? ".velocity" : ".flow_rate"), w);
+    }
+    if (w.initial_velocity == "taylor_green")
+      prescribed_speed(w.taylor_green_speed, "water.taylor_green_speed", w);
     const double mass = w.rho0 * std::pow(scene_.run.dp, scene_.run.dimension);
     if (!finite_positive(mass))
       fail("run.dp",
            "the water particle mass rho0 dp^" + std::to_string(scene_.run.dimension) + " = " +
                format_number(mass) +
                " kg is not a finite positive number (water.rho0 = " + format_number(w.rho0) + ")");
+  }
+
+  /// A speed the scene prescribes to water stays below kMachLimit c0.
+  void prescribed_speed(double speed, const std::string& key, const WaterPhase& w) const {
+    if (std::fabs(speed) <= kMachLimit * w.sound_speed) return;
+    fail(key, "prescribes water at " + rounded(std::fabs(speed)) + " m/s, Mach " +
+                  rounded(std::fabs(speed) / w.sound_speed) +
+                  " for water.sound_speed = " + format_number(w.sound_speed) +
+                  " m/s; the weakly compressible model holds "
+                  "below Mach " +
+                  format_number(kMachLimit) + " (c0 >= 10 |v|max by design)");
   }
 
   void material(const SoilMaterial& m, const std::string& key) const {

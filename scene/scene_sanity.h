@@ -9,6 +9,13 @@
 
 namespace porosph::scene {
 
+/// The Mach number M = |v| / c0 of the water (sph/mach_watch.h): above kMachWarn the coupler warns
+/// once and records the maximum in run.json; above kMachLimit the weakly compressible model means
+/// nothing (density errors ~ M^2 ~ 10 %): a speed the scene prescribes is refused at check, one
+/// the run reaches fails it.
+inline constexpr double kMachWarn = 0.1;
+inline constexpr double kMachLimit = 0.3;
+
 /// An output interval below this fraction of the expected time step asks for several outputs per
 /// step; the coupler writes at most one per step, so such a value means nothing and is refused.
 inline constexpr double kMinOutputIntervalOverDt = 0.1;
