@@ -46,6 +46,7 @@
 
 #include <cmath>
 
+#include "fluid_solver/diffusion_state.h"
 #include "fluid_solver/equation_of_state.h"
 #include "sph/vector.h"
 
@@ -54,12 +55,8 @@ namespace porosph::fluid {
 template <int D>
 class DensityDiffusion {
  public:
-  /// What the pair term needs of one particle, computed once per particle and step: s^(2-gamma)
-  /// (kappa / (rho0 / c0^2)) and s^(gamma-1) ((gamma - 1) Phi / c0^2 + 1), s = rho / rho0.
-  struct State {
-    double inv_s_gamma_2 = 1.0;
-    double s_gamma_1 = 1.0;
-  };
+  /// What the pair term needs of one particle (diffusion_state.h).
+  using State = DiffusionState;
 
   DensityDiffusion() = default;
   /// delta (0: off), smoothing length h, the EOS (rho0, c0, gamma, B) and the gravity vector.
@@ -84,23 +81,32 @@ class DensityDiffusion {
     return {std::pow(s, 2.0 - gamma_), std::pow(s, gamma_ - 1.0)};
   }
 
+  /// (psi_b - psi_a) / c0^2 with psi = Phi - g . x, the departure potential: (Phi_b - Phi_a -
+  /// g . x_ba) / c0^2 = (s_b^(g-1) - s_a^(g-1)) / (g - 1) + g . x_ab / c0^2 [-].
+  double potential_difference(const State& a, const State& b, const sph::Vec<D>& x_ab) const {
+    return (b.s_gamma_1 - a.s_gamma_1) * inv_gamma_1_ + g_over_c0_2_.dot(x_ab);
+  }
+
   /// kappa_ab (Phi_b - Phi_a - g . x_ba) [kg/m^3]: the density difference of b over a that is not
   /// hydrostatic (zero in still water at every depth; rho_b - rho_a without gravity, to first
   /// order in p / B).
   double hydrostatic_departure(const State& a, const State& b, const sph::Vec<D>& x_ab) const {
-    const double kappa = 0.5 * rho0_ * (a.inv_s_gamma_2 + b.inv_s_gamma_2);  // x c0^2
-    // Phi_b - Phi_a = c0^2 (s_b^(g-1) - s_a^(g-1)) / (g - 1); g . x_ba = -g . x_ab
-    return kappa * ((b.s_gamma_1 - a.s_gamma_1) * inv_gamma_1_ + g_over_c0_2_.dot(x_ab));
+    return kappa_c0_2(a, b) * potential_difference(a, b, x_ab);
   }
 
   /// Summand of D_a for neighbour b, without the factor delta h c0:
-  ///   2 kappa_ab (Phi_b - Phi_a - g . x_ba) (x_ba . grad_a W_ab) / (r^2 + eta^2) m_b / rho_b,
+  ///   2 kappa_ab (psi_b - psi_a - (G_a + G_b)/2 . x_ba) (x_ba . grad_a W_ab) / (r^2 + eta^2) V_b,
   /// from `factor` = x_ab . grad_a W_ab / (r^2 + eta^2) (viscosity_morris.h
-  /// regularised_gradient_factor, shared with the Morris term) and the volume V_b = m_b / rho_b.
+  /// regularised_gradient_factor, shared with the Morris term), the volume V_b = m_b / rho_b and
+  /// the renormalised gradients G of psi / c0^2 (density_diffusion_gradient.h; zero: the plain
+  /// bracket). The linear correction makes the summand vanish for any linear psi: a steady
+  /// seepage flow as well as still water (Antuono et al. 2010). Still antisymmetric.
   double pair_term(const State& a, const State& b, double volume_b, const sph::Vec<D>& x_ab,
-                   double factor) const {
-    const double weight = -2.0 * factor;  // x_ba . grad W >= 0
-    return volume_b * (weight * hydrostatic_departure(a, b, x_ab));
+                   double factor, const sph::Vec<D>& gradient_a = sph::Vec<D>::Zero(),
+                   const sph::Vec<D>& gradient_b = sph::Vec<D>::Zero()) const {
+    const double weight = -2.0 * factor;                              // x_ba . grad W >= 0
+    const double linear = 0.5 * (gradient_a + gradient_b).dot(x_ab);  // -(G_a + G_b)/2 . x_ba
+    return volume_b * (weight * kappa_c0_2(a, b) * (potential_difference(a, b, x_ab) + linear));
   }
 
   /// The summand without the hydrostatic correction (Molteni & Colagrossi 2009 as such).
@@ -109,6 +115,11 @@ class DensityDiffusion {
   }
 
  private:
+  /// kappa_ab c0^2 = rho0 (s_a^(2-g) + s_b^(2-g)) / 2 [kg/m^3].
+  double kappa_c0_2(const State& a, const State& b) const {
+    return 0.5 * rho0_ * (a.inv_s_gamma_2 + b.inv_s_gamma_2);
+  }
+
   double coefficient_ = 0.0, rho0_ = 1000.0, gamma_ = 7.0, inv_gamma_1_ = 1.0 / 6.0;
   sph::Vec<D> g_over_c0_2_ = sph::Vec<D>::Zero();
   bool seven_ = true;

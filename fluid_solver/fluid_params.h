@@ -26,6 +26,9 @@ struct FluidParams {
   bool no_slip = true;             ///< walls: mirrored velocity in viscous terms; false: excluded
   int density_filter_every = 0;    ///< Shepard filter period in steps (0: off)
   double density_diffusion = 0.0;  ///< delta of the density diffusion term (0: off)
+  /// The diffusion leaves any linear departure potential alone (density_diffusion_gradient.h);
+  /// false: only still water (water.density_diffusion_correction = "hydrostatic").
+  bool diffusion_linear = true;
   double particle_shifting = 0.0;  ///< A of the particle shifting (particle_shifting.h; 0: off)
   int euler_every = 40;            ///< modified Verlet: Euler step period
   double cfl = 0.2, c_a = 0.25, viscous_coefficient = 0.125;
@@ -60,6 +63,7 @@ struct FluidParams {
     p.no_slip = w.wall_condition == "no_slip";
     p.density_filter_every = w.density_filter_every;
     p.density_diffusion = w.density_diffusion;
+    p.diffusion_linear = w.density_diffusion_correction == "linear";
     p.particle_shifting = w.particle_shifting;
     p.euler_every = s.run.euler_every;
     p.cfl = s.run.cfl;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "fluid_solver/diffusion_state.h"
 #include "sph/vector.h"
 
 namespace porosph::fluid {
@@ -33,6 +34,11 @@ struct FluidParticles {
   /// 1 / rho and m / rho of every particle, from density and mass at the start of each rate
   /// evaluation (fluid_rates.h), so that the pair loop multiplies instead of dividing.
   std::vector<double> inverse_density, volume;
+  /// Renormalised gradient of the density diffusion's departure potential (water particles only;
+  /// density_diffusion_gradient.h), filled before the pair loop when the diffusion is on.
+  std::vector<Vec> departure_gradient;
+  /// The density diffusion's per-particle state (water particles only), filled with it.
+  std::vector<DiffusionState> diffusion_state;
 
   std::size_t size() const { return position.size(); }
   std::size_t wall_count() const { return size() - n_free; }

@@ -7,6 +7,7 @@
 #include "fluid_solver/artificial_viscosity.h"
 #include "fluid_solver/continuity.h"
 #include "fluid_solver/density_diffusion.h"
+#include "fluid_solver/density_diffusion_gradient.h"
 #include "fluid_solver/pressure_force.h"
 #include "fluid_solver/viscosity_morris.h"
 #include "sph/kernels.h"
@@ -37,11 +38,21 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
   for (std::int64_t a = 0; a < n; ++a) {
     const Vec v_a = vel[a];
     const double rho_a = rho[a], inv_rho_a = inv_rho[a], p_a = p[a], c_a = c[a];
+  if constexpr (kDiffusion) {
+    fill_diffusion_states(diffusion, P);
+    if (prm.diffusion_linear) {
+      departure_gradients(nl, kernel, diffusion, P, P.departure_gradient);
+    } else {
+      P.departure_gradient.assign(P.n_free, Vec::Zero());  // the plain bracket
+    }
+  }
+  const Vec* departure_gradient = P.departure_gradient.data();
+  const DiffusionState* diffusion_state = P.diffusion_state.data();
     Vec acc = Vec::Zero();
     double divergence = 0.0;
     double diffusion_sum = 0.0;  // D_a / (delta h c0), water neighbours only (density_diffusion.h)
-    typename DensityDiffusion<D>::State diffusion_a;
-    if constexpr (kDiffusion) diffusion_a = diffusion.state(rho_a);
+    DiffusionState diffusion_a;
+    if constexpr (kDiffusion) diffusion_a = diffusion_state[a];
     // Water neighbours.
     for (auto it = nl.begin(a); it != nl.mid(a); ++it) {
       const std::int32_t b = it->b;
@@ -55,8 +66,9 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
         const double inv_r2_eta2 = 1.0 / (r2 + eta2);
         const double factor = regularised_gradient_factor(grad_factor * r2, inv_r2_eta2);
         if constexpr (kDiffusion) {
-          diffusion_sum += diffusion.pair_term(diffusion_a, diffusion.state(rho[b]), volume[b],
-                                               it->x_ab, factor);
+          diffusion_sum +=
+              diffusion.pair_term(diffusion_a, diffusion_state[b], volume[b], it->x_ab, factor,
+                                  departure_gradient[a], departure_gradient[b]);
         }
         if constexpr (kMorris) {
           acc += morris_viscous_acceleration<D>(m[b], mu, mu, inv_rho_a, inv_rho[b], factor, v_ab);

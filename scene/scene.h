@@ -91,14 +91,15 @@ struct CouplingSettings {
 
 /// Water phase (table [water]).
 struct WaterPhase {
-  double rho0 = 1000.0;             ///< rest density [kg/m^3]
-  double sound_speed = 20.0;        ///< numerical sound speed c in eq. 4 [m/s]
-  double viscosity = 1.0e-3;        ///< dynamic viscosity mu [Pa s] (Morris 1997 term); 0: off
-  double alpha = 0.05;              ///< Monaghan artificial viscosity alpha; 0: off
-  double beta = 0.0;                ///< Monaghan artificial viscosity beta
-  double gamma = 7.0;               ///< Tait exponent of eq. 4
-  int density_filter_every = 0;     ///< Shepard density re-initialisation every N steps; 0: off
-  double density_diffusion = 0.1;   ///< delta of the density diffusion term (delta-SPH); 0: off
+  double rho0 = 1000.0;            ///< rest density [kg/m^3]
+  double sound_speed = 20.0;       ///< numerical sound speed c in eq. 4 [m/s]
+  double viscosity = 1.0e-3;       ///< dynamic viscosity mu [Pa s] (Morris 1997 term); 0: off
+  double alpha = 0.05;             ///< Monaghan artificial viscosity alpha; 0: off
+  double beta = 0.0;               ///< Monaghan artificial viscosity beta
+  double gamma = 7.0;              ///< Tait exponent of eq. 4
+  int density_filter_every = 0;    ///< Shepard density re-initialisation every N steps; 0: off
+  double density_diffusion = 0.1;  ///< delta of the density diffusion term (delta-SPH); 0: off
+  std::string density_diffusion_correction = "linear";  ///< "linear" | "hydrostatic"
   double particle_shifting = 0.0;   ///< A of the Fickian particle shifting (Lind 2012); 0: off
   bool hydrostatic_initial = true;  ///< initial density from hydrostatic pressure (inverse eq. 4)
   std::string initial_velocity = "none";   ///< "none" (at rest) | "taylor_green"

@@ -125,8 +125,9 @@ class SanityChecker {
     }
     if (m.seepage == "none" || !scene_.water) return;  // the law acts between water and soil
     const std::string law = "seepage '" + m.seepage + "' of " + key;
-    if (!(norm_of(scene_.run.gravity) > 0.0))
-      fail("run.gravity", law + " needs gravity |g| > 0 (its unit weight gamma_w = rho0 |g|)");
+    // No gravity is allowed: the drag's unit weight gamma_w = rho0 |g| then takes the standard
+    // gravity 9.80665 m/s^2 (coupler/interaction/soil_water_interaction.cpp), so that a
+    // conductivity stays a material property (the momentum-exchange test runs without gravity).
     const bool kozeny = m.seepage == "darcy_kozeny_carman";
     if (kozeny || m.seepage == "forchheimer_den_adel") {
       if (!(scene_.water->viscosity > 0.0))

@@ -166,9 +166,19 @@ void add_water(SceneSchema& s) {
                        .at_least(0)
                        .at_most(1)
                        .doc("delta of the density diffusion term added to the continuity equation "
-                            "(Molteni & Colagrossi 2009, with the hydrostatic correction of "
-                            "Fourtakas et al. 2019), between water particles; 0 switches it off. "
-                            "0.1 is the standard value."));
+                            "(Molteni & Colagrossi 2009), between water particles; 0 switches it "
+                            "off. 0.1 is the standard value."));
+  s.keys.push_back(
+      Key("water.density_diffusion_correction", T::String)
+          .fallback("\"linear\"")
+          .one_of({"linear", "hydrostatic"})
+          .doc("What the density diffusion leaves alone. \"hydrostatic\": still weakly "
+               "compressible water (the departure of the EOS enthalpy from the gravity "
+               "potential is diffused; fluid_solver/density_diffusion.h); \"linear\": any "
+               "linear departure as well, a steady seepage flow included (Antuono et al. 2010, "
+               "with a renormalised gradient; one more neighbour pass). With \"hydrostatic\" "
+               "the diffusion carries part of a seepage discharge: the water in a fluidised bed "
+               "moved 2.5 % slower than Q / A."));
   s.keys.push_back(Key("water.particle_shifting", T::Float)
                        .fallback("0.0")
                        .at_least(0)

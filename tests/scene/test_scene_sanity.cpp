@@ -45,8 +45,6 @@ TEST(SceneSanity, MeaninglessCombinationsNameTheirKey) {
       {"Kozeny-Carman without a water viscosity",
        with(b, "sound_speed = 15.0", "sound_speed = 15.0\nviscosity = 0"), "water.viscosity",
        "viscosity = 0", "needs a water viscosity > 0"},
-      {"seepage without gravity", with(b, "c_a = 0.005", "c_a = 0.005\ngravity = [0, 0]"),
-       "run.gravity", "gravity", "needs gravity |g| > 0"},
       {"|g| overflows", with(c, "dt0 = 1e-4", "dt0 = 1e-4\ngravity = [1e300, -1e300]"),
        "run.gravity", "gravity", "overflows to inf"},
       {"pressure scale overflows",
