@@ -47,6 +47,7 @@ FluidSolver<D>::FluidSolver(const scene::Scene& s)
                                                      s.run.kernel_gradient == "lattice")),
       damping_(DampingStage::from_scene(s)),
       zones_(*s.water, params_.dp, damping_.duration()),
+      reservoirs_(*s.water, params_.gravity, params_.dp, params_.h, params_.eos),
       pore_fields_(s.has_soil()) {
   if (s.run.kernel == "cubic_spline") {
     kernel_kind_ = KernelKind::CubicSpline;
@@ -62,6 +63,8 @@ FluidSolver<D>::FluidSolver(const scene::Scene& s)
   particles_ = std::move(initial.particles);
   next_wall_removal_ = initial.next_wall_removal;
   next_id_ = static_cast<std::int64_t>(particles_.size());
+  if (reservoirs_.count() > 0)  // room for a few refills before the arrays must grow
+    particles_.reserve(particles_.position.capacity() + 4 * reservoirs_.column_count());
   neighbours_.set_skin(sph::kSolverSkinFraction * 2.0 * params_.h);
   reorder_by_cell();
 }
@@ -78,6 +81,7 @@ std::vector<std::string> FluidSolver<D>::active_terms() const {
   if (params_.density_filter_every > 0) terms.push_back("shepard_density_filter");
   if (zones_.inflow_count() > 0) terms.push_back("inflow");
   if (zones_.has_outflows()) terms.push_back("outflow");
+  if (reservoirs_.count() > 0) terms.push_back("reservoir");
   if (box_.any_periodic()) terms.push_back("periodic");
   if (damping_.duration() > 0.0) terms.push_back("damping_stage_freeze");
   return terms;
@@ -267,6 +271,7 @@ void FluidSolver<D>::integrate(double dt) {
     std::fill(P.velocity.begin(), P.velocity.begin() + n, sph::Vec<D>::Zero());
     std::fill(P.velocity_previous.begin(), P.velocity_previous.begin() + n, sph::Vec<D>::Zero());
   }
+  const std::uint64_t born_before = born_count_, removed_before = removed_count_;
   zones_.begin_step(time_, dt);
   std::int64_t past_zone = 0;  // zone particles past their downstream face
   const bool shifting = params_.shifting_on() && shifting_.concentration.size() == P.n_free;
@@ -287,12 +292,18 @@ void FluidSolver<D>::integrate(double dt) {
   if (past_zone > 0) born_count_ += zones_.renew(P, params_.volume, next_id_, inflow_mass_);
   dt_previous_ = dt;
   remove_leaving_particles();
+  if (reservoirs_.count() > 0) born_count_ += reservoirs_.refill(P, time_, next_id_, inflow_mass_);
+  // Births and removals shift the indices: a new search even where they leave the count as it was
+  // (the list would otherwise survive as long as no particle moved more than half the skin).
+  if (born_count_ != born_before || removed_count_ != removed_before) neighbours_.invalidate();
 }
 
 template <int D>
 bool FluidSolver<D>::leaves(std::size_t a) const {
   const FluidParticles<D>& P = particles_;
-  return box_.outside(P.position[a]) || (P.zone[a] < 0 && zones_.in_outflow(P.position[a], time_));
+  if (box_.outside(P.position[a])) return true;
+  return P.zone[a] < 0 &&
+         (zones_.in_outflow(P.position[a], time_) || reservoirs_.above_level(P.position[a], time_));
 }
 
 template <int D>

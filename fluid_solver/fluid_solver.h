@@ -16,6 +16,7 @@
 #include "fluid_solver/fluid_particles.h"
 #include "fluid_solver/particle_shifting.h"
 #include "fluid_solver/pore_fields.h"
+#include "fluid_solver/reservoirs.h"
 #include "io/checkpoint_file.h"
 #include "io/snapshot_writer.h"
 #include "proto/coupling_client.h"
@@ -54,8 +55,9 @@ class FluidSolver {
   /// `pore_velocity` fields (scenes with soil; pore_fields.h). Throws on a size mismatch.
   void set_porosity(const std::vector<double>& porosity);
   /// Modified Verlet step of the free water; prescribed motion of the inflow zones' particles and
-  /// renewal of the zones (flow_zones.h); periodic wrap; removal of the water that left the domain
-  /// or entered an outflow zone (counted in removed_count); none of this while the damping stage
+  /// renewal of the zones (flow_zones.h); periodic wrap; removal of the water that left the domain,
+  /// entered an outflow zone or rose above a reservoir's level (counted in removed_count); refill
+  /// of the reservoirs (reservoirs.h); none of this while the damping stage
   /// freezes the water (damping_stage.h). Then time += dt, ++step, and removal of the walls whose
   /// time has come.
   void advance(double dt);
@@ -84,7 +86,7 @@ class FluidSolver {
   std::size_t particle_count() const { return particles_.size(); }
   std::size_t free_count() const { return particles_.n_free; }
   std::uint64_t removed_count() const { return removed_count_; }
-  /// Water particles created by the inflow zones so far.
+  /// Water particles created by the inflow zones and the reservoirs so far.
   std::uint64_t born_count() const { return born_count_; }
 
   // Read access for tests and tools.
@@ -92,6 +94,7 @@ class FluidSolver {
   const FluidParams<D>& params() const { return params_; }
   const sph::NeighbourList<D>& neighbours() const { return neighbours_; }
   const FlowZones<D>& flow_zones() const { return zones_; }
+  const Reservoirs<D>& reservoirs() const { return reservoirs_; }
   const DampingStage& damping_stage() const { return damping_; }
 
  private:
@@ -106,7 +109,8 @@ class FluidSolver {
   bool next_step_is_euler() const;
   /// Whether this step re-initialises the density (water.density_filter_every).
   bool density_filter_due() const;
-  /// True if water particle a left the domain or is a free particle in an outflow zone.
+  /// True if water particle a left the domain or is a free particle in an outflow zone or above
+  /// a reservoir's level.
   bool leaves(std::size_t a) const;
   void remove_leaving_particles();
   void remove_expired_walls();
@@ -119,6 +123,7 @@ class FluidSolver {
   sph::WendlandC2<D> wendland_;
   DampingStage damping_;
   FlowZones<D> zones_;
+  Reservoirs<D> reservoirs_;
   std::vector<sph::PreparedObservable<D>> observables_;
 
   FluidParticles<D> particles_;
@@ -129,10 +134,10 @@ class FluidSolver {
   std::uint64_t removed_count_ = 0;
   double neighbours_per_particle_ = 0.0;  ///< of the latest neighbour list (free particles)
   std::uint64_t born_count_ = 0;
-  double inflow_mass_ = 0.0;          ///< mass of the particles born in inflow zones so far [kg]
-  double outflow_mass_ = 0.0;         ///< mass of the particles removed so far [kg]
-  std::int64_t next_id_ = 0;          ///< id of the next particle born in an inflow zone
-  double dt_previous_ = 0.0;          ///< the last step's dt: the Verlet span is dt_previous + dt
+  double inflow_mass_ = 0.0;   ///< mass of the particles born in inflow zones / reservoirs [kg]
+  double outflow_mass_ = 0.0;  ///< mass of the particles removed so far [kg]
+  std::int64_t next_id_ = 0;   ///< id of the next particle born in an inflow zone
+  double dt_previous_ = 0.0;   ///< the last step's dt: the Verlet span is dt_previous + dt
   bool interaction_fresh_ = false;    ///< add_interaction called since the last advance
   bool interaction_nonzero_ = false;  ///< particles_.interaction may hold non-zero values
   double next_wall_removal_ = -1.0;   ///< earliest pending wall removal time (< 0: none)

@@ -82,6 +82,14 @@ struct OutflowZone {
   double start_time = 0.0;       ///< removes water from this time on [s]
 };
 
+/// A constant-head reservoir ([[water.reservoir]]): holds the water surface inside the box at
+/// `level` (fluid_solver/reservoirs.h).
+struct ReservoirZone {
+  std::vector<double> min, max;  ///< the box [m]
+  double level = 0.0;            ///< coordinate of the surface along the gravity axis [m]
+  double start_time = 0.0;       ///< holds the level from this time on [s]
+};
+
 /// Soil-water interaction settings ([coupling]).
 struct CouplingSettings {
   double submerged_saturation = 0.8;  ///< water fraction from which soil is submerged
@@ -110,6 +118,7 @@ struct WaterPhase {
   std::vector<Shape> blocks;               ///< regions filled with water at t = 0
   std::vector<InflowZone> inflows;
   std::vector<OutflowZone> outflows;
+  std::vector<ReservoirZone> reservoirs;
 };
 
 /// One soil material ([[soil.materials]]): Drucker-Prager skeleton (eq. 6-12) and the seepage

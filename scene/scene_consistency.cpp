@@ -183,6 +183,7 @@ void check_scene_consistency(const toml::table& root, int dimension, const Error
       shapes.check(*blocks->get(i)->as_table(), "water.blocks[" + std::to_string(i) + "]", true);
   if (const toml::table* water = root.get_as<toml::table>("water"))
     check_flow_zones(*water, shapes, errors);
+  check_reservoirs(root, shapes, errors);
   if (const toml::table* soil = root.get_as<toml::table>("soil"))
     check_soil_consistency(*soil, shapes, errors);
   if (const toml::array* walls = root.get_as<toml::array>("walls"))

@@ -1,5 +1,6 @@
-// Water inflow / outflow zones ([[water.inflow]], [[water.outflow]]) and the soil-water coupling
-// settings ([coupling]): their schema, the relations between their keys, and their typed form.
+// Water inflow / outflow zones and reservoirs ([[water.inflow]], [[water.outflow]],
+// [[water.reservoir]]) and the soil-water coupling settings ([coupling]): their schema, the
+// relations between their keys, and their typed form.
 #include <cmath>
 
 #include "scene/scene_internal.h"
@@ -57,6 +58,33 @@ void add_flow_zones(SceneSchema& s) {
                        .at_least(0)
                        .doc("The zone removes water from this time on (e.g. the sudden removal "
                             "of a water surcharge)."));
+
+  s.tables.push_back(
+      {"water.reservoir[]", true, false,
+       "Constant-head reservoirs (a dam's reservoir, a river, a pit kept dry by pumping): a box in "
+       "which the water surface is held at `level`. After every step, free water particles in "
+       "the box whose centres lie above the level are removed (booked as outflow), and in each "
+       "lattice column of the box (spacing dp across gravity, from its min) whose highest water "
+       "particle lies more than dp below the level a particle is added at the column's centre dp "
+       "above it (booked as inflow; with that particle's velocity, the hydrostatic density for "
+       "rho0 g (level - height) through the inverse of eq. 4, mass rho dp^D; in an empty column "
+       "at the box's bottom + dp/2, at rest), unless another particle lies within 0.5 dp or the "
+       "particles around fill more than 0.45 of its kernel volume (it would lie inside the "
+       "water). So the particle tops stay between level - dp and level: the surface (tops + "
+       "dp/2) within half a spacing of the level. The box should reach down into the water and "
+       "up above the level (fluid_solver/reservoirs.h)."});
+  add_zone_box_keys(s, "water.reservoir[]");
+  s.keys.push_back(Key("water.reservoir[].level", T::Float)
+                       .unit("m")
+                       .required()
+                       .doc("Coordinate, along the axis gravity acts along, of the water surface "
+                            "to hold (gravity must be along one axis); inside the box along that "
+                            "axis."));
+  s.keys.push_back(Key("water.reservoir[].start_time", T::Float)
+                       .unit("s")
+                       .fallback("0.0")
+                       .at_least(0)
+                       .doc("The zone holds the level from this time on."));
 }
 
 void add_coupling(SceneSchema& s) {
@@ -120,7 +148,47 @@ void check_flow_zones(const toml::table& water, const ShapeChecker& shapes,
   }
 }
 
+void check_reservoirs(const toml::table& root, const ShapeChecker& shapes,
+                      const ErrorContext& errors) {
+  const toml::array* reservoirs = root["water"]["reservoir"].as_array();
+  if (!reservoirs) return;
+  const std::vector<double> g = vector_of(root["run"]["gravity"].node());
+  int nonzero = 0;
+  std::size_t axis = 0;
+  for (std::size_t k = 0; k < g.size(); ++k)
+    if (g[k] != 0.0) {
+      ++nonzero;
+      axis = k;
+    }
+  for (std::size_t i = 0; i < reservoirs->size(); ++i) {
+    const toml::table& zone = *reservoirs->get(i)->as_table();
+    const std::string key = "water.reservoir[" + std::to_string(i) + "]";
+    shapes.ordered(zone.get("min"), zone.get("max"), key + ".max", key + ".min");
+    if (nonzero != 1)
+      errors.fail(zone.get("level"), key + ".level",
+                  "a reservoir needs run.gravity along one axis, e.g. [0.0, -9.81]");
+    const double level = *zone["level"].value<double>();
+    const double lo = vector_of(zone.get("min"))[axis], hi = vector_of(zone.get("max"))[axis];
+    if (!(level > lo && level < hi))
+      errors.fail(zone.get("level"), key + ".level",
+                  "must lie inside the box along " + std::string(axis_name(axis)) + " (between " +
+                      format_number(lo) + " and " + format_number(hi) + "), got " +
+                      format_number(level));
+  }
+}
+
 void build_flow_zones(const toml::table& water, WaterPhase& w) {
+  if (const toml::array* reservoirs = water.get_as<toml::array>("reservoir")) {
+    for (const auto& element : *reservoirs) {
+      const toml::table& t = *element.as_table();
+      ReservoirZone z;
+      z.min = vector_of(t.get("min"));
+      z.max = vector_of(t.get("max"));
+      z.level = *t["level"].value<double>();
+      z.start_time = *t["start_time"].value<double>();
+      w.reservoirs.push_back(std::move(z));
+    }
+  }
   if (const toml::array* inflows = water.get_as<toml::array>("inflow")) {
     for (const auto& element : *inflows) {
       const toml::table& t = *element.as_table();

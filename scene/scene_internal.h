@@ -116,7 +116,11 @@ void build_soil_loads(const toml::table& soil, SoilPhase& p);
 /// flow_rate (+ cross_section), direction along one axis.
 void check_flow_zones(const toml::table& water, const ShapeChecker& shapes,
                       const ErrorContext& errors);
-/// Fills w.inflows and w.outflows from a validated [water] table.
+/// Relations of [[water.reservoir]] with the rest of the scene: min < max, gravity along one
+/// axis, level inside the box along that axis.
+void check_reservoirs(const toml::table& root, const ShapeChecker& shapes,
+                      const ErrorContext& errors);
+/// Fills w.inflows, w.outflows and w.reservoirs from a validated [water] table.
 void build_flow_zones(const toml::table& water, WaterPhase& w);
 /// The [coupling] settings (defaults when the table is absent).
 CouplingSettings build_coupling(const toml::table& root);
