@@ -17,11 +17,16 @@ namespace {
 
 template <int D, class Kernel, bool kMorris, bool kArtificial, bool kNoSlip, bool kDiffusion>
 RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
-                       const FluidParams<D>& prm, FluidParticles<D>& P) {
+                       const FluidParams<D>& prm, FluidParticles<D>& P, ViscousLevel level) {
   using Vec = sph::Vec<D>;
   constexpr bool kRegularised = kMorris || kArtificial || kDiffusion;  // need 1/(r^2 + eta^2)
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
   const Vec* vel = P.velocity.data();
+  // The velocities the viscous terms act on: v^n, or v^{n-1} on a Verlet step (viscous_level.h).
+  const Vec* visc_vel = level == ViscousLevel::Previous ? P.velocity_previous.data() : vel;
+  // p_a enters the pressure pair term with +1 (symmetric form) or -1 (difference form, with
+  // particle shifting; pressure_force.h).
+  const double pressure_sign = prm.shifting_on() ? -1.0 : 1.0;
   const Vec* wall_v = P.wall_velocity.data();
   const double* rho = P.density.data();
   const double* inv_rho = P.inverse_density.data();
@@ -60,7 +65,8 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
       const Vec grad_w = grad_factor * it->x_ab;
       const Vec v_ab = v_a - vel[b];
       divergence += continuity_term<D>(volume[b], v_ab, grad_w);
-      acc += pressure_acceleration<D>(m[b], p_a, p[b], inv_rho_a, inv_rho[b], grad_w);
+      acc +=
+          pressure_acceleration<D>(m[b], pressure_sign * p_a, p[b], inv_rho_a, inv_rho[b], grad_w);
       if constexpr (kRegularised) {
         const double r2 = it->r * it->r;
         const double inv_r2_eta2 = 1.0 / (r2 + eta2);
@@ -71,11 +77,12 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
                                   departure_gradient[a], departure_gradient[b]);
         }
         if constexpr (kMorris) {
-          acc += morris_viscous_acceleration<D>(m[b], mu, mu, inv_rho_a, inv_rho[b], factor, v_ab);
+          acc += morris_viscous_acceleration<D>(m[b], mu, mu, inv_rho_a, inv_rho[b], factor,
+                                                Vec(visc_vel[a] - visc_vel[b]));
         }
         if constexpr (kArtificial) {
-          acc += av.acceleration<D>(m[b], v_ab, it->x_ab, inv_r2_eta2, c_a, c[b], rho_a, rho[b],
-                                    grad_w);
+          acc += av.acceleration<D>(m[b], Vec(visc_vel[a] - visc_vel[b]), it->x_ab, inv_r2_eta2,
+                                    c_a, c[b], rho_a, rho[b], grad_w);
         }
       }
     }
@@ -85,9 +92,10 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
       const double grad_factor = kernel.grad_factor(it->r);
       const Vec grad_w = grad_factor * it->x_ab;
       divergence += continuity_term<D>(volume[b], Vec(v_a - vel[b]), grad_w);
-      acc += pressure_acceleration<D>(m[b], p_a, p[b], inv_rho_a, inv_rho[b], grad_w);
+      acc +=
+          pressure_acceleration<D>(m[b], pressure_sign * p_a, p[b], inv_rho_a, inv_rho[b], grad_w);
       if constexpr (kNoSlip && (kMorris || kArtificial)) {
-        const Vec v_ab = v_a - wall_v[b];
+        const Vec v_ab = visc_vel[a] - wall_v[b];
         const double r2 = it->r * it->r;
         const double inv_r2_eta2 = 1.0 / (r2 + eta2);
         if constexpr (kMorris) {
@@ -116,24 +124,27 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
 
 template <int D, class Kernel, bool kMorris, bool kArtificial, bool kNoSlip>
 RateSummary dispatch_diffusion(const sph::NeighbourList<D>& nl, const Kernel& k,
-                               const FluidParams<D>& prm, FluidParticles<D>& P) {
+                               const FluidParams<D>& prm, FluidParticles<D>& P,
+                               ViscousLevel level) {
   if (prm.diffusion_on())
-    return rates_loop<D, Kernel, kMorris, kArtificial, kNoSlip, true>(nl, k, prm, P);
-  return rates_loop<D, Kernel, kMorris, kArtificial, kNoSlip, false>(nl, k, prm, P);
+    return rates_loop<D, Kernel, kMorris, kArtificial, kNoSlip, true>(nl, k, prm, P, level);
+  return rates_loop<D, Kernel, kMorris, kArtificial, kNoSlip, false>(nl, k, prm, P, level);
 }
 
 template <int D, class Kernel, bool kMorris, bool kArtificial>
 RateSummary dispatch_wall(const sph::NeighbourList<D>& nl, const Kernel& k,
-                          const FluidParams<D>& prm, FluidParticles<D>& P) {
-  if (prm.no_slip) return dispatch_diffusion<D, Kernel, kMorris, kArtificial, true>(nl, k, prm, P);
-  return dispatch_diffusion<D, Kernel, kMorris, kArtificial, false>(nl, k, prm, P);
+                          const FluidParams<D>& prm, FluidParticles<D>& P, ViscousLevel level) {
+  if (prm.no_slip)
+    return dispatch_diffusion<D, Kernel, kMorris, kArtificial, true>(nl, k, prm, P, level);
+  return dispatch_diffusion<D, Kernel, kMorris, kArtificial, false>(nl, k, prm, P, level);
 }
 
 template <int D, class Kernel, bool kMorris>
 RateSummary dispatch_artificial(const sph::NeighbourList<D>& nl, const Kernel& k,
-                                const FluidParams<D>& prm, FluidParticles<D>& P) {
-  if (prm.artificial_on()) return dispatch_wall<D, Kernel, kMorris, true>(nl, k, prm, P);
-  return dispatch_wall<D, Kernel, kMorris, false>(nl, k, prm, P);
+                                const FluidParams<D>& prm, FluidParticles<D>& P,
+                                ViscousLevel level) {
+  if (prm.artificial_on()) return dispatch_wall<D, Kernel, kMorris, true>(nl, k, prm, P, level);
+  return dispatch_wall<D, Kernel, kMorris, false>(nl, k, prm, P, level);
 }
 
 }  // namespace
@@ -163,16 +174,18 @@ void update_water_pressure(const FluidParams<D>& params, FluidParticles<D>& P) {
 
 template <int D, class Kernel>
 RateSummary compute_fluid_rates(const sph::NeighbourList<D>& neighbours, const Kernel& kernel,
-                                const FluidParams<D>& params, FluidParticles<D>& P) {
+                                const FluidParams<D>& params, FluidParticles<D>& P,
+                                ViscousLevel level) {
   update_inverse_density_and_volume(P);
   if (params.morris_on())
-    return dispatch_artificial<D, Kernel, true>(neighbours, kernel, params, P);
-  return dispatch_artificial<D, Kernel, false>(neighbours, kernel, params, P);
+    return dispatch_artificial<D, Kernel, true>(neighbours, kernel, params, P, level);
+  return dispatch_artificial<D, Kernel, false>(neighbours, kernel, params, P, level);
 }
 
-#define POROSPH_INSTANTIATE(D, KERNEL)                    \
-  template RateSummary compute_fluid_rates<D, KERNEL<D>>( \
-      const sph::NeighbourList<D>&, const KERNEL<D>&, const FluidParams<D>&, FluidParticles<D>&);
+#define POROSPH_INSTANTIATE(D, KERNEL)                                                            \
+  template RateSummary compute_fluid_rates<D, KERNEL<D>>(const sph::NeighbourList<D>&,            \
+                                                         const KERNEL<D>&, const FluidParams<D>&, \
+                                                         FluidParticles<D>&, ViscousLevel);
 POROSPH_INSTANTIATE(2, sph::CubicSpline)
 POROSPH_INSTANTIATE(2, sph::WendlandC2)
 POROSPH_INSTANTIATE(3, sph::CubicSpline)

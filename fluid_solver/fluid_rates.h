@@ -1,7 +1,8 @@
 // The water phase's right-hand side: for every water particle a (gather form, one OpenMP task per
 // particle, no atomics), the sum over its neighbours b of
 //   eq. 2   continuity                        continuity.h
-//   eq. 3   symmetric pressure gradient       pressure_force.h
+//   eq. 3   pressure gradient                 pressure_force.h    (symmetric; difference form
+//                                                                   with particle shifting)
 //   eq. 3   Morris 1997 laminar viscosity     viscosity_morris.h      (mu > 0)
 //           Monaghan 1992 artificial visc.    artificial_viscosity.h  (alpha or beta > 0)
 //   eq. 2+  delta-SPH density diffusion       density_diffusion.h     (delta > 0; water pairs only)
@@ -12,6 +13,7 @@
 
 #include "fluid_solver/fluid_params.h"
 #include "fluid_solver/fluid_particles.h"
+#include "fluid_solver/viscous_level.h"
 #include "sph/neighbour_list.h"
 
 namespace porosph::fluid {
@@ -32,9 +34,11 @@ void update_inverse_density_and_volume(FluidParticles<D>& P);
 
 /// Fills P.inverse_density, P.volume (update_inverse_density_and_volume), P.acceleration and
 /// P.density_rate of the water particles. Walls must be up to date
-/// (update_wall_state) and water pressures too (update_water_pressure).
+/// (update_wall_state, at the same `level`) and water pressures too (update_water_pressure).
+/// `level`: the velocities the viscous terms act on (viscous_level.h).
 template <int D, class Kernel>
 RateSummary compute_fluid_rates(const sph::NeighbourList<D>& neighbours, const Kernel& kernel,
-                                const FluidParams<D>& params, FluidParticles<D>& P);
+                                const FluidParams<D>& params, FluidParticles<D>& P,
+                                ViscousLevel level = ViscousLevel::Current);
 
 }  // namespace porosph::fluid

@@ -124,14 +124,16 @@ template <int D>
 template <class Kernel>
 void FluidSolver<D>::compute_rates_with(const Kernel& kernel) {
   const bool filtered = density_filter_due();  // an Euler step (next_step_is_euler)
+  // Viscous terms at v^{n-1} on a Verlet step (viscous_level.h).
+  const ViscousLevel level = next_step_is_euler() ? ViscousLevel::Current : ViscousLevel::Previous;
   update_water_pressure(params_, particles_);
-  update_wall_state(neighbours_, kernel, params_, particles_);
+  update_wall_state(neighbours_, kernel, params_, particles_, level);
   if (filtered) {  // the filter uses the wall densities; then walls follow the water
     shepard_density_filter(neighbours_, kernel, particles_, filter_scratch_);
     update_water_pressure(params_, particles_);
-    update_wall_state(neighbours_, kernel, params_, particles_);
+    update_wall_state(neighbours_, kernel, params_, particles_, level);
   }
-  const RateSummary r = compute_fluid_rates(neighbours_, kernel, params_, particles_);
+  const RateSummary r = compute_fluid_rates(neighbours_, kernel, params_, particles_, level);
   if (params_.shifting_on()) {
     shifting_.compute(neighbours_, kernel, params_.dp, r.max_speed, particles_);
   }

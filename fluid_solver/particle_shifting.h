@@ -4,8 +4,11 @@
 //   delta r_a = -A h U_max dt grad C_a,
 //   grad C_a  = sum_b V_b (1 + R (W_ab / W(dp))^n) grad_a W_ab,   R = 0.2, n = 4,
 // applied after each position update; the particle keeps its velocity and density (as in Sun et
-// al.; a first-order Taylor correction of both, as in Lind et al., was tried: no better on the
-// Taylor-Green vortex, docs/verification.md). Momentum is unchanged by the shift.
+// al.; a first-order Taylor correction of both, as in Lind et al., was tried twice: no better on
+// the Taylor-Green vortex, +6.44 % against +6.54 % at L/50, docs/verification.md). Momentum is
+// unchanged by the shift. With shifting on, the pressure gradient takes its zeroth-order
+// consistent difference form (pressure_force.h): the shift, not the symmetric form's residue
+// force, keeps the particles uniform.
 // Why: a Lagrangian lattice is stretched by the flow's strain (at the stagnation points of a
 // Taylor-Green vortex by exp(U k t)), and standard SPH on such a stretched, then disordered,
 // particle set loses its accuracy and becomes unstable within t ~ 1 / (U k) (measured: the vortex

@@ -15,20 +15,26 @@
 
 #include "fluid_solver/fluid_params.h"
 #include "fluid_solver/fluid_particles.h"
+#include "fluid_solver/viscous_level.h"
 #include "sph/neighbour_list.h"
 
 namespace porosph::fluid {
 
-/// Updates pressure, density, mass, sound speed and wall_velocity of the wall particles of P.
+/// Updates pressure, density, mass, sound speed and wall_velocity of the wall particles of P;
+/// wall_velocity from the water velocities at `level`, those the viscous terms act on
+/// (viscous_level.h).
 template <int D, class Kernel>
 void update_wall_state(const sph::NeighbourList<D>& neighbours, const Kernel& kernel,
-                       const FluidParams<D>& params, FluidParticles<D>& P) {
+                       const FluidParams<D>& params, FluidParticles<D>& P,
+                       ViscousLevel level = ViscousLevel::Current) {
   using Vec = sph::Vec<D>;
   const std::int64_t n0 = static_cast<std::int64_t>(P.n_free);
   const std::int64_t n1 = static_cast<std::int64_t>(P.size());
   const Vec wall_acceleration = Vec::Zero();  // fixed walls
   const Vec body = params.gravity - wall_acceleration;
   const TaitEos& eos = params.eos;
+  const Vec* water_v =
+      level == ViscousLevel::Previous ? P.velocity_previous.data() : P.velocity.data();
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::int64_t w = n0; w < n1; ++w) {
     double sum_w = 0.0, sum_pw = 0.0;
@@ -38,7 +44,7 @@ void update_wall_state(const sph::NeighbourList<D>& neighbours, const Kernel& ke
       sum_w += kw;
       sum_pw += P.pressure[it->b] * kw;
       sum_rho_x_w += (P.density[it->b] * kw) * it->x_ab;
-      sum_v_w += kw * P.velocity[it->b];
+      sum_v_w += kw * water_v[it->b];
     }
     if (sum_w > 0.0) {
       P.pressure[w] = (sum_pw + body.dot(sum_rho_x_w)) / sum_w;
