@@ -26,10 +26,15 @@ TEST(VerificationCases, TaylorGreenDecayRateConverges) {
   ASSERT_EQ(fine.result.exit_code, 0) << fine.result.output;
   const auto f = validation::check_taylor_green(fine.out);
   EXPECT_NEAR(c.rate_analytic, 4 * 0.01 * 4 * M_PI * M_PI, 1e-12);
-  EXPECT_LT(std::abs(f.rel_error), 0.045) << "rate " << f.rate_simulated;
+  // Measured (2026-12-04, viscous terms at v^{n-1} on Verlet steps, difference-form pressure
+  // gradient with shifting; docs/verification.md): -2.19 % at dp 0.02, +0.44 % at dp 0.01 (were
+  // +5.91 / +3.73 %). Bounds: the 2 % at the finer level with room for platform noise
+  // (1 %), 3 % at the coarse one; the symmetric pressure form's +3.7 % fails both.
+  EXPECT_LT(std::abs(c.rel_error), 0.03) << "rate " << c.rate_simulated;
+  EXPECT_LT(std::abs(f.rel_error), 0.01) << "rate " << f.rate_simulated;
   EXPECT_LT(std::abs(f.rel_error), std::abs(c.rel_error));
-  // ln E stays on a line (an exponential decay, no breakdown): measured 0.039 and 0.0075.
-  EXPECT_LT(f.fit_residual, 0.02);
+  // ln E stays on a line (an exponential decay, no breakdown): measured 0.019 and 0.0064.
+  EXPECT_LT(f.fit_residual, 0.01);
   EXPECT_NEAR(f.energy0, f.energy0_analytic, 1e-3 * f.energy0_analytic);
 }
 
