@@ -30,6 +30,19 @@ class TaitEos {
     return rho0_ * std::pow(std::max(base, floor), 1.0 / gamma_);
   }
 
+  /// Pressure of still water `depth` below its free surface under gravity g: the solution of
+  /// dp/dd = rho(p) g with this EOS (the enthalpy int_0^p dp'/rho grows as g d),
+  ///   p(d) = B ((1 + (gamma - 1)/gamma rho0 g d / B)^(gamma/(gamma - 1)) - 1)
+  ///        = rho0 g d (1 + g d / (2 c0^2) + ...),
+  /// the state that the density diffusion leaves alone (density_diffusion.h). Negative depths
+  /// (above the surface) give the mirrored tension, as rho0 g d does.
+  double still_water_pressure(double depth, double g) const {
+    const double r = gamma_ / (gamma_ - 1.0);
+    const double base = 1.0 + rho0_ * g * depth / (r * b_);
+    if (!(base > 0.0)) return rho0_ * g * depth;  // beyond the tension the EOS can represent
+    return b_ * (std::pow(base, r) - 1.0);
+  }
+
   double sound_speed(double rho) const {
     const double s = rho / rho0_;
     if (seven_) return c0_ * s * s * s;

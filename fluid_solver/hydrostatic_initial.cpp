@@ -119,7 +119,7 @@ void hydrostatic_state(const sph::Vec<D>* x, std::size_t n, const sph::Vec<D>* w
       level = (lid ? body_top[body[i]] : s) + 0.5 * dp;
     }
     previous = s;
-    pressure[i] = eos.rho0() * g * (level - s);
+    pressure[i] = eos.still_water_pressure(level - s, g);  // weakly compressible still water
     density[i] = eos.density(pressure[i]);
   }
 }

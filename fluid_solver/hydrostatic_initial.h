@@ -1,5 +1,7 @@
 // Hydrostatic initial state of the water (so that still water starts in equilibrium):
-//   p_a = rho0 |g| (s_level(a) - s_a),   rho_a = inverse of eq. 4 at p_a,
+//   p_a = p(s_level(a) - s_a),   rho_a = inverse of eq. 4 at p_a,
+// p(d) the pressure of still weakly compressible water d below its surface
+// (TaitEos::still_water_pressure; rho0 |g| d to first order),
 // with s = x . (-g/|g|) the height along -g. The level is found per connected water body
 // (water_bodies.h: particles linked through neighbours at most 1.5 dp apart, so a wall separates
 // bodies and a gap under it joins them), each from its own free surface:

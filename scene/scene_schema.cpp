@@ -189,17 +189,20 @@ void add_water(SceneSchema& s) {
                             "density unchanged (fluid_solver/particle_shifting.h); keeps the "
                             "particles uniform in strained flows; 0 switches it off. No "
                             "free-surface treatment: confined or periodic water only."));
-  s.keys.push_back(Key("water.hydrostatic_initial", T::Bool)
-                       .fallback("true")
-                       .doc("Initial density from the hydrostatic pressure p = rho0 g (level - "
-                            "height) (inverse of eq. 4), per connected water body (particles "
-                            "linked through neighbours at most 1.5 dp apart: a wall separates "
-                            "bodies, water in a gap under it joins them), each from its own free "
-                            "surface: in each column of a body the level is the top of its water "
-                            "+ dp/2, except under a wall (a wall particle less than 2 dp above "
-                            "the water's top in its column: under a wall's tip, a plate, a lid), "
-                            "where it is the top of the whole body + dp/2 "
-                            "(fluid_solver/hydrostatic_initial.h)."));
+  s.keys.push_back(
+      Key("water.hydrostatic_initial", T::Bool)
+          .fallback("true")
+          .doc("Initial density from the pressure of still weakly compressible "
+               "water d = level - height below the surface, p(d) = B ((1 + (gamma - "
+               "1)/gamma rho0 g d / B)^(gamma/(gamma - 1)) - 1) = rho0 g d (1 + g d / "
+               "(2 c0^2) + ...) (inverse of eq. 4), per connected water body (particles "
+               "linked through neighbours at most 1.5 dp apart: a wall separates "
+               "bodies, water in a gap under it joins them), each from its own free "
+               "surface: in each column of a body the level is the top of its water "
+               "+ dp/2, except under a wall (a wall particle less than 2 dp above "
+               "the water's top in its column: under a wall's tip, a plate, a lid), "
+               "where it is the top of the whole body + dp/2 "
+               "(fluid_solver/hydrostatic_initial.h)."));
   s.keys.push_back(Key("water.initial_velocity", T::String)
                        .fallback("\"none\"")
                        .one_of({"none", "taylor_green"})

@@ -19,6 +19,10 @@ using testing::box;
 
 constexpr double kRho = 1000.0, kG = 9.81, kDp = 0.01;
 
+/// Still weakly compressible water d below its surface (c0 = 20 m/s, the pools' EOS):
+/// rho0 g d (1 + g d / (2 c0^2) + ...), TaitEos::still_water_pressure.
+double still(double depth) { return TaitEos(kRho, 20.0, 7.0).still_water_pressure(depth, kG); }
+
 /// Water of `blocks` (lattice points inside a wall skipped) and the particles of `walls`.
 template <int D>
 struct Pools {
@@ -64,7 +68,7 @@ TEST(HydrostaticBodies, TwoPoolsOfDifferentLevelsEachFromItsOwnSurface) {
   ASSERT_EQ(pools.bodies, 2u);
   for (std::size_t i = 0; i < pools.water.size(); ++i) {
     const double level = pools.water[i][0] < 0.3 ? 0.3 : 0.15;
-    EXPECT_NEAR(pools.p[i], kRho * kG * (level - pools.water[i][1]), 1e-9);
+    EXPECT_NEAR(pools.p[i], still(level - pools.water[i][1]), 1e-9);
   }
 }
 
@@ -78,8 +82,7 @@ TEST(HydrostaticBodies, APoolOnAShelfDoesNotLoadThePoolBelowIt) {
   ASSERT_EQ(pools.bodies, 2u);
   for (std::size_t i = 0; i < pools.water.size(); ++i) {
     const double level = pools.water[i][1] > 0.1 ? 0.3 : 0.1;
-    EXPECT_NEAR(pools.p[i], kRho * kG * (level - pools.water[i][1]), 1e-9)
-        << pools.water[i].transpose();
+    EXPECT_NEAR(pools.p[i], still(level - pools.water[i][1]), 1e-9) << pools.water[i].transpose();
   }
 }
 
@@ -101,7 +104,7 @@ void check_water_under_a_wall_tip() {
   std::size_t under_tip = 0;
   for (std::size_t i = 0; i < pools.water.size(); ++i) {
     const auto& x = pools.water[i];
-    EXPECT_NEAR(pools.p[i], kRho * kG * (0.3 - x[D - 1]), 1e-9) << x.transpose();
+    EXPECT_NEAR(pools.p[i], still(0.3 - x[D - 1]), 1e-9) << x.transpose();
     under_tip += x[0] > 0.3 && x[0] < 0.33;
   }
   EXPECT_GE(under_tip, D == 2 ? 30u : 150u);  // 3 columns x 10 rows (x 5 in 3D)
@@ -129,7 +132,7 @@ TEST(HydrostaticBodies, SolverStartsEachBodyFromItsOwnSurface) {
     const auto& x = P.position[a];
     if (x[1] > kDp) continue;
     const double depth = (x[0] < 0.6 ? 0.3 : 0.15) - x[1];
-    EXPECT_NEAR(P.pressure[a], kRho * kG * depth, 0.01 * kRho * kG * depth) << x.transpose();
+    EXPECT_NEAR(P.pressure[a], still(depth), 0.01 * kRho * kG * depth) << x.transpose();
     ++bottom;
   }
   EXPECT_EQ(bottom, 87);  // 60 + 27 columns

@@ -17,14 +17,19 @@ namespace {
 using Vec2 = sph::Vec<2>;
 
 TEST(FluidHydrostatic, DensityIsInverseEosOfRhoGDepth) {
-  // Block 0.1 m wide, 0.2 m deep at dp = 0.01: p = rho0 g (0.2 - y) (the free surface half a
-  // spacing above the top centres), rho = inverse EOS(p), to round-off.
+  // Block 0.1 m wide, 0.2 m deep at dp = 0.01: p = p(0.2 - y) of still weakly compressible water
+  // (the free surface half a spacing above the top centres), rho = inverse EOS(p), to round-off;
+  // p(d) = B ((1 + (6/7) rho0 g d / B)^(7/6) - 1) = rho0 g d (1 + g d / (2 c0^2) + ...).
   const TaitEos eos(1000.0, 14.0, 7.0);
   const auto x = sph::fill_shape<2>(testing::box({0, 0}, {0.1, 0.2}), 0.01);
   std::vector<double> p(x.size()), rho(x.size());
   hydrostatic_state<2>(x.data(), x.size(), Vec2(0, -9.81), 0.01, eos, p.data(), rho.data());
   for (std::size_t i = 0; i < x.size(); ++i) {
-    const double expected = 1000.0 * 9.81 * (0.2 - x[i][1]);
+    const double d = 0.2 - x[i][1], b = 1000.0 * 14.0 * 14.0 / 7.0;
+    const double expected =
+        b * (std::pow(1.0 + 6.0 / 7.0 * 1000.0 * 9.81 * d / b, 7.0 / 6.0) - 1.0);
+    EXPECT_NEAR(expected, 1000.0 * 9.81 * d * (1.0 + 9.81 * d / (2.0 * 14.0 * 14.0)),
+                1e-3 * 1000.0 * 9.81 * d);  // the second-order term is ~1e-4 relative here
     EXPECT_NEAR(p[i], expected, 1e-9);
     EXPECT_NEAR(rho[i], eos.density(expected), 1e-12);
   }
@@ -40,7 +45,7 @@ TEST(FluidHydrostatic, FollowsGravityNotAnAxisAndColumnTops) {
   hydrostatic_state<2>(x.data(), x.size(), Vec2(-9.81, 0), 0.01, eos, p.data(), rho.data());
   for (std::size_t i = 0; i < x.size(); ++i) {
     const double top = x[i][1] < 0.05 ? 0.2 : 0.3;
-    EXPECT_NEAR(p[i], 1000.0 * 9.81 * (top - x[i][0]), 1e-9) << x[i].transpose();
+    EXPECT_NEAR(p[i], eos.still_water_pressure(top - x[i][0], 9.81), 1e-9) << x[i].transpose();
   }
   // 3D, gravity along -z; zero gravity gives rho0 everywhere.
   const auto x3 = sph::fill_shape<3>(testing::box({0, 0, 0}, {0.05, 0.05, 0.1}), 0.01);
@@ -48,7 +53,7 @@ TEST(FluidHydrostatic, FollowsGravityNotAnAxisAndColumnTops) {
   hydrostatic_state<3>(x3.data(), x3.size(), sph::Vec<3>(0, 0, -9.81), 0.01, eos, p3.data(),
                        rho3.data());
   for (std::size_t i = 0; i < x3.size(); ++i)
-    EXPECT_NEAR(p3[i], 1000.0 * 9.81 * (0.1 - x3[i][2]), 1e-9);
+    EXPECT_NEAR(p3[i], eos.still_water_pressure(0.1 - x3[i][2], 9.81), 1e-9);
   hydrostatic_state<3>(x3.data(), x3.size(), sph::Vec<3>::Zero(), 0.01, eos, p3.data(),
                        rho3.data());
   for (double r : rho3) EXPECT_EQ(r, 1000.0);
@@ -93,7 +98,7 @@ TEST(FluidWallBoundary, InterpolatedWallPressureReproducesHydrostaticField) {
   for (std::size_t w = t.P.n_free; w + 1 < t.P.size(); ++w) {
     if (t.list.mid(w) == t.list.begin(w)) continue;  // no water neighbour
     const double y = t.P.position[w][1];
-    EXPECT_NEAR(t.P.pressure[w], 1000.0 * 9.81 * (0.1 - y), 3e-3 * scale)
+    EXPECT_NEAR(t.P.pressure[w], t.eos.still_water_pressure(0.1 - y, 9.81), 3e-3 * scale)
         << t.P.position[w].transpose();
     EXPECT_NEAR(t.P.density[w], t.eos.density(t.P.pressure[w]), 1e-12);
     EXPECT_NEAR(t.P.mass[w], t.P.density[w] * t.dp * t.dp, 1e-15);  // fixed volume dp^2
