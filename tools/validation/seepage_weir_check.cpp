@@ -110,7 +110,7 @@ SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
   const Box downstream{weir.x1 + margin, layer.y1 + margin, layer.x1 - margin, 1e9};
   const Box under{weir.x0 + margin, layer.y0, weir.x1 - margin, layer.y1};
   const Box exit{weir.x1, layer.y1 - dp, weir.x1 + out.exit_stretch, layer.y1};
-  std::vector<double> probe_p(probe_points.size(), 0.0), probe_h(probe_points.size(), 0.0);
+  std::vector<double> probe_h(probe_points.size(), 0.0);
   double h1 = 0, h2 = 0, exit_gradient = 0;
   for (const auto& snap : snapshots) {
     if (snap.time < out.window_start - 1e-12) continue;
@@ -129,7 +129,7 @@ SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
     }
     double sum_h1 = 0, sum_h2 = 0, flux = 0, exit_v = 0;
     std::size_t n1 = 0, n2 = 0, n_exit = 0;
-    std::vector<double> pp(probe_points.size(), 0.0), ph(probe_points.size(), 0.0);
+    std::vector<double> ph(probe_points.size(), 0.0);
     std::vector<std::size_t> pn(probe_points.size(), 0);
     for (std::size_t i = 0; i < x.rows; ++i) {
       if (fixed.values[i]) continue;
@@ -142,7 +142,7 @@ SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
       for (std::size_t k = 0; k < probe_points.size(); ++k) {
         if (std::abs(xi - probe_points[k].first) <= dp &&
             std::abs(yi - probe_points[k].second) <= dp)
-          pp[k] += p.values[i], ph[k] += head, ++pn[k];
+          ph[k] += head, ++pn[k];
       }
     }
     if (n1 == 0 || n2 == 0 || n_exit == 0)
@@ -154,7 +154,6 @@ SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
     exit_gradient += exit_v / n_exit / out.conductivity;
     for (std::size_t k = 0; k < probe_points.size(); ++k) {
       if (pn[k] == 0) throw std::runtime_error(run_dir + ": a probe without water");
-      probe_p[k] += pp[k] / pn[k];
       probe_h[k] += ph[k] / pn[k];
     }
     ++out.outputs;
@@ -175,8 +174,10 @@ SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
     SeepageProbe probe;
     probe.x = probe_points[k].first;
     probe.y = probe_points[k].second;
-    probe.pressure = probe_p[k] / n;
     probe.head = probe_h[k] / n;
+    // The pressure that the SPH head implies at the probe point: the particles of the +-dp box
+    // sit on average off the point, where p differs by rho g dy, while the head is smooth.
+    probe.pressure = water.pressure(probe.head - probe.y);
     probe.head_reference = out.head_downstream + dh * reference.estimates[2 + k].extrapolated;
     probe.pressure_reference = water.pressure(probe.head_reference - probe.y);
     out.probes.push_back(probe);

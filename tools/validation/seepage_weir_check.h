@@ -16,8 +16,9 @@
 //     velocity, so q is its integral over the depth);
 //   - exit gradient: mean upward velocity / K of the water in the layer's top row over the stretch
 //     `exit_stretch` next to the weir's downstream face, against the FV mean upward gradient there;
-//   - pore pressure at probes (a box of +-dp): mean p against p(h_ref - z) of still weakly
-//     compressible water, and the head error over h1 - h2.
+//   - pore pressure at probes: the mean head z + Phi(p)/g of the water in a box of +-dp around
+//     the point, converted to the pressure at the point, p(h - z) of still weakly compressible
+//     water, against p(h_ref - z); and the head error over h1 - h2.
 #pragma once
 
 #include <string>
