@@ -77,11 +77,11 @@ TEST(Cases, HydrostaticTankShortened) {
 
 // The full 2 s of the hydrostatic tank at dp = 0.02 m (30 x 20 particles, ~6,000 steps), against
 // still weakly compressible water p(d) (tools/validation/still_water.h). Measured at this spacing
-// with the lattice-normalised kernel gradient and the exact hydrostatic density diffusion:
-// per-particle error 0.20 %, row-mean 0.16 %, bottom-quarter bias -0.10 % of rho0 g H, max speed
-// 0.008 % of sqrt(g H) (before those two changes: 3.9 %, 2.3 %, +0.7 %, 1.1 %). Bounds: the
-// issue-30 bias target 0.2 % itself; the others about 3x the measurement, far below the old
-// values, so a return of the lattice bias (+0.93 %) or the diffusion creep fails.
+// with the lattice-normalised kernel gradient, the density diffusion's linear correction and the
+// start from p(d): per-particle error 0.29 %, row-mean 0.09 %, bottom-quarter bias -0.004 % of
+// rho0 g H, max speed 0.005 % of sqrt(g H) (before those changes: 3.9 %, 2.3 %, +0.7 %, 1.1 %).
+// Bounds: the issue-30 bias target 0.2 % itself; the others 2-6x the measurement, far below the
+// old values, so a return of the lattice bias (+0.93 %) or the diffusion creep fails.
 TEST(Cases, HydrostaticTankStaysHydrostaticForTwoSeconds) {
   const auto run = run_case("hydrostatic_tank", {"run.dp=0.02", "run.output_interval=0.5"});
   ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
