@@ -38,11 +38,6 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
   const ArtificialViscosity av = prm.artificial;
   const Vec g = prm.gravity;
   const DensityDiffusion<D> diffusion(prm.density_diffusion, prm.h, prm.eos, g);
-  double max_v2 = 0.0, max_a2 = 0.0;
-#pragma omp parallel for schedule(dynamic, 256) reduction(max : max_v2, max_a2)
-  for (std::int64_t a = 0; a < n; ++a) {
-    const Vec v_a = vel[a];
-    const double rho_a = rho[a], inv_rho_a = inv_rho[a], p_a = p[a], c_a = c[a];
   if constexpr (kDiffusion) {
     fill_diffusion_states(diffusion, P);
     if (prm.diffusion_linear) {
@@ -53,6 +48,11 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
   }
   const Vec* departure_gradient = P.departure_gradient.data();
   const DiffusionState* diffusion_state = P.diffusion_state.data();
+  double max_v2 = 0.0, max_a2 = 0.0;
+#pragma omp parallel for schedule(dynamic, 256) reduction(max : max_v2, max_a2)
+  for (std::int64_t a = 0; a < n; ++a) {
+    const Vec v_a = vel[a];
+    const double rho_a = rho[a], inv_rho_a = inv_rho[a], p_a = p[a], c_a = c[a];
     Vec acc = Vec::Zero();
     double divergence = 0.0;
     double diffusion_sum = 0.0;  // D_a / (delta h c0), water neighbours only (density_diffusion.h)
