@@ -48,6 +48,11 @@ std::size_t max_frame_bytes(const scene::Scene& scene);
 std::unique_ptr<SolverHub> open_solver_hub(const std::string& endpoint, const scene::Scene& scene,
                                            std::unique_ptr<PrivateSocketDir>& socket_dir);
 
+/// How long a solver waits for the coupler (Setup.timeout_seconds) when the coupler waits
+/// `coupler_timeout` for a solver (run.solver_timeout): 2 x + 5 s, so that when one solver stalls
+/// the coupler's timeout fires first and names it, and the healthy solver is still waiting.
+inline double solver_side_timeout(double coupler_timeout) { return 2.0 * coupler_timeout + 5.0; }
+
 /// What `coupler run --attach` tells the user: where the solvers connect, the token they need
 /// (POROSPH_RUN_TOKEN) and, for `everywhere`, that every interface of the machine listens.
 std::string attach_instructions(const std::vector<std::string>& phases, const std::string& endpoint,

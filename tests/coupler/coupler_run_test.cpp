@@ -113,6 +113,43 @@ TEST(CouplerRunFaults, SilentSolverTimesOut) {
   expect_failed(run_with_dummy("hang", "--hang-at-step 4"), "did not answer within 2");
 }
 
+// A stalled solver is named, not the healthy one beside it (issue 29): the soil dummy sleeps at
+// step 4 while the water dummy keeps waiting. The coupler waits run.solver_timeout (2 s) and the
+// solvers wait 2 x that + 5 s for the coupler (solver_side_timeout), so the coupler's timeout
+// fires first and the message names the soil solver. Before, both timed out at the same moment
+// and the water solver's exit was reported as the failure.
+TEST(CouplerRunFaults, StalledSolverIsNamedNotTheHealthyOne) {
+  const std::string dir = fresh_dir("stall");
+  std::string scene_text = kScene;
+  scene_text += R"(
+[soil]
+[[soil.materials]]
+name = "sand"
+density = 2000.0
+porosity = 0.4
+young_modulus = 1.0e6
+poisson_ratio = 0.3
+friction_angle = 30.0
+[[soil.blocks]]
+shape = "box"
+min = [0.5, 0.1]
+max = [0.6, 0.2]
+material = "sand"
+)";
+  const std::string scene = write_text(dir + "/scene.toml", scene_text);
+  const auto result =
+      run_process({bin("coupler"), "run", scene, "--out", dir + "/out", "--fluid-solver",
+                   bin("dummy_solver") + " --phase water", "--soil-solver",
+                   bin("dummy_solver") + " --phase soil --hang-at-step 4", "--no-progress"},
+                  dir + "/log.txt", 60);
+  EXPECT_EQ(result.exit_code, 1) << result.output;
+  const auto run_json = read_json(dir + "/out/run.json");
+  const std::string message = run_json.at("message");
+  EXPECT_NE(message.find("the soil solver did not answer"), std::string::npos) << message;
+  EXPECT_EQ(message.find("water solver"), std::string::npos) << message;
+  EXPECT_LT(result.seconds, 15.0);
+}
+
 TEST(CouplerRunFaults, ProtocolVersionMismatchIsRefused) {
   expect_failed(run_with_dummy("version", "--protocol-version 99"), "protocol version mismatch");
 }
