@@ -168,7 +168,7 @@ std::size_t Reservoirs<D>::refill(FluidParticles<D>& P, double time, std::int64_
     born_.position[b] = c.x;
     if (c.source < 0) born_.velocity[b] = born_.velocity_previous[b] = Vec::Zero();
     born_.acceleration[b] = born_.interaction[b] = born_.wall_velocity[b] = Vec::Zero();
-    born_.pressure[b] = eos_.rho0() * g_ * std::max(0.0, c.level - s);
+    born_.pressure[b] = eos_.still_water_pressure(std::max(0.0, c.level - s), g_);
     born_.density[b] = born_.density_previous[b] = eos_.density(born_.pressure[b]);
     born_.density_rate[b] = 0.0;
     born_.sound_speed[b] = eos_.sound_speed(born_.density[b]);
