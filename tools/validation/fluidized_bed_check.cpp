@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "io/snapshot_reader.h"
 #include "tools/validation/run_directory.h"
 
 namespace porosph::validation {
@@ -21,6 +22,65 @@ double window_mean(const std::vector<double>& t, const std::vector<double>& valu
     ++count;
   }
   return count ? sum / count : std::nan("");
+}
+
+/// FluidizedBedCheck::velocity_ratio and mass_flux_ratio from the snapshots of fluid.h5 at or
+/// after `window_start`.
+void water_in_bed(const std::string& run_dir, const nlohmann::json& run, FluidizedBedCheck& out,
+                  double window_start) {
+  const auto& parameters = run.at("parameters");
+  const auto& inflow = parameters.at("water").at("inflow").at(0);
+  const auto dir = inflow.at("direction").get<std::vector<double>>();
+  const auto zone_lo = inflow.at("min").get<std::vector<double>>();
+  const auto zone_hi = inflow.at("max").get<std::vector<double>>();
+  const double dp = parameters.at("run").at("dp").get<double>();
+  const std::size_t dim = dir.size();
+  out.superficial_velocity = out.max_flow_rate / inflow.at("cross_section").get<double>();
+  double bed_bottom = INFINITY;  // lowest soil block face along the inflow direction
+  for (const auto& block : parameters.at("soil").at("blocks")) {
+    const auto lo = block.at("min").get<std::vector<double>>();
+    const auto hi = block.at("max").get<std::vector<double>>();
+    double a = 0, b = 0;
+    for (std::size_t k = 0; k < dim; ++k) a += lo[k] * dir[k], b += hi[k] * dir[k];
+    bed_bottom = std::min(bed_bottom, std::min(a, b));
+  }
+  const double from = bed_bottom + 2.0 * dp, to = out.bed_height_final - 2.0 * dp;
+  io::SnapshotReader reader(run_dir + "/fluid.h5");
+  double velocity = 0, flux = 0;
+  int snapshots = 0;
+  for (const auto& snap : reader.snapshots()) {
+    if (snap.time < window_start - 1e-12) continue;
+    const auto x = reader.read_f64(snap.index, "position");
+    const auto v = reader.read_f64(snap.index, "velocity");
+    const auto rho = reader.read_f64(snap.index, "density");
+    const auto fixed = reader.read_u8(snap.index, "fixed");
+    double sum_v = 0, sum_flux = 0, sum_inflow_rho = 0;
+    std::size_t n = 0, n_inflow = 0;
+    for (std::size_t i = 0; i < x.rows; ++i) {
+      if (fixed.values[i]) continue;
+      double s = 0, vs = 0;
+      bool in_zone = true;
+      for (std::size_t k = 0; k < dim; ++k) {
+        const double xk = x.values[i * dim + k];
+        s += xk * dir[k];
+        vs += v.values[i * dim + k] * dir[k];
+        in_zone = in_zone && xk >= zone_lo[k] && xk <= zone_hi[k];
+      }
+      if (in_zone) sum_inflow_rho += rho.values[i], ++n_inflow;
+      if (s < from || s > to) continue;
+      sum_v += vs;
+      sum_flux += rho.values[i] * vs;
+      ++n;
+    }
+    if (n == 0 || n_inflow == 0) continue;
+    const double rho_inflow = sum_inflow_rho / n_inflow;
+    velocity += sum_v / n / out.superficial_velocity;
+    flux += sum_flux / n / (rho_inflow * out.superficial_velocity);
+    ++snapshots;
+  }
+  if (snapshots == 0) throw std::runtime_error(run_dir + ": no water in the bed in the window");
+  out.velocity_ratio = velocity / snapshots;
+  out.mass_flux_ratio = flux / snapshots;
 }
 
 }  // namespace
@@ -73,6 +133,7 @@ FluidizedBedCheck check_fluidized_bed(const std::string& run_dir, double steady_
       out.expansion_flow_rate = flow_rate(t[i]);
     }
   }
+  water_in_bed(run_dir, run, out, w0);
   out.porosity_in_target = std::abs(out.steady_porosity - 0.51) <= 0.02;
   out.onset_in_target = out.onset_flow_rate >= 0.07e-3 && out.onset_flow_rate <= 0.12e-3;
   return out;

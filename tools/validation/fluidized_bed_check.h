@@ -35,6 +35,13 @@ struct FluidizedBedCheck {
   double max_flow_rate = 0;         ///< Q_max of the ramp [m^3/s]
   bool porosity_in_target = false;  ///< 0.51 +- 0.02
   bool onset_in_target = false;     ///< 0.07 .. 0.12 l/s
+  /// Issue 23: the mean water velocity along the inflow inside the bed (2 dp inside its bottom and
+  /// its steady top), over the steady window, against the superficial velocity U = Q / A (in this
+  /// model the water velocity inside soil is the Darcy velocity, docs/water-in-soil.md); and the
+  /// same for the mass flux rho v against rho_inflow U, which steady mass conservation fixes.
+  double superficial_velocity = 0;  ///< U = Q_max / cross_section [m/s]
+  double velocity_ratio = 0;        ///< mean v / U
+  double mass_flux_ratio = 0;       ///< mean rho v / (rho_inflow U)
 };
 
 FluidizedBedCheck check_fluidized_bed(const std::string& run_dir, double steady_window = 1.0);

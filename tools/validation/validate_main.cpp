@@ -121,6 +121,14 @@ int report_fluidized_bed(const porosph::validation::FluidizedBedCheck& c) {
   print_summary("onset of fluidisation",
                 c.onset_flow_rate >= 0 ? fmt("%.4f l/s", 1e3 * c.onset_flow_rate) : "none",
                 "0.07 .. 0.12 l/s (experiment)", "-", "inside the range", c.onset_in_target);
+  std::printf(
+      "water in the bed (steady window): mean velocity %.4f x Q/A (U = %.4g m/s), mass flux"
+      " rho v %.4f x rho_inflow U\n",
+      c.velocity_ratio, c.superficial_velocity, c.mass_flux_ratio);
+  // Issue 23: the water inside a uniform bed moves at the superficial velocity Q / A within 1 %.
+  print_summary("water velocity in the bed / (Q/A)", fmt("%.4f", c.velocity_ratio),
+                "1 (Darcy velocity = Q/A)", fmt("%+.2f %%", 100 * (c.velocity_ratio - 1)), "1 %",
+                std::abs(c.velocity_ratio - 1) <= 0.01);
   return c.porosity_in_target && c.onset_in_target ? 0 : 1;
 }
 
