@@ -345,9 +345,11 @@ def main():
               "shared the two cores: they rank the cases, they are not throughput figures "
               "(those are in docs/performance.md).", "",
               "Model version: the rows of dam_break, hydrostatic_tank, soil_column, "
-              "granular_collapse, darcy_column and fluidized_bed were rerun on 2026-12-04 with "
+              "granular_collapse and darcy_column were rerun on 2026-12-04 with "
               "the lattice-normalised kernel gradient and the exact hydrostatic density diffusion "
-              "(docs/verification.md, \"Still water\"); hydraulic_heave with those, the "
+              "(docs/verification.md, \"Still water\"); fluidized_bed with the whole current "
+              "model (also the diffusion's linear correction and the start from p(d)); "
+              "hydraulic_heave with those, the "
               "diffusion's linear correction and hydrostatic_initial per water body (not yet the "
               "start from p(d)): its failure moved from 4.75 s to 5.30 s and now misses the 10 % "
               "target (the plain kernel gives 5.55 s, so the lattice normalisation is not the "
