@@ -284,10 +284,7 @@ void RunSession::handshake() {
     setup.dt0 = scene_.run.dt0;
     setup.end_time = scene_.run.end_time;
     setup.gravity = scene_.run.gravity;
-    // A solver waits twice as long for the coupler as the coupler waits for a solver, plus 5 s:
-    // when one solver stalls, the coupler's own timeout fires first and names the silent solver,
-    // instead of the healthy one timing out at the same moment and being blamed (issue 29).
-    setup.timeout_seconds = solver_side_timeout(timeout);
+    setup.timeout_seconds = solver_side_timeout(timeout);  // longer: a stalled solver is named
     if (resumed_) {
       setup.restore_checkpoint =
           coupling::solver_checkpoint_path(out_dir_, phase, record_.checkpoint_index);

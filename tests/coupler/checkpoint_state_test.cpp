@@ -15,31 +15,19 @@
 #include "coupler/checkpoint.h"
 #include "proto/checkpoint_names.h"
 #include "scene/scene_loader.h"
+#include "tests/support/dummy_scene.h"
 
 namespace porosph::coupler {
 namespace {
 
 namespace fs = std::filesystem;
 
-const char* kScene = R"(
-[scene]
-name = "checkpoint_state"
-[run]
-end_time = 1.0
-output_interval = 0.1
-dp = 0.01
-dt0 = 0.001
-checkpoint_interval = 0.25
-[domain]
-min = [0.0, 0.0]
-max = [1.0, 1.0]
-[water]
-sound_speed = 10.0
-[[water.blocks]]
-shape = "box"
-min = [0.1, 0.1]
-max = [0.2, 0.2]
-)";
+const std::string kScene = testing::dummy_water_scene("checkpoint_state",
+                                                      "end_time = 1.0\n"
+                                                      "output_interval = 0.1\n"
+                                                      "dp = 0.01\n"
+                                                      "dt0 = 0.001\n"
+                                                      "checkpoint_interval = 0.25\n");
 
 std::string scratch(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() /

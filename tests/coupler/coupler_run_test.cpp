@@ -4,31 +4,19 @@
 // run.json status "failed" naming the reason, and leave no process behind.
 #include <gtest/gtest.h>
 
+#include "tests/support/dummy_scene.h"
 #include "tests/support/process_support.h"
 
 namespace porosph::testing {
 namespace {
 
 // A valid water-only scene; the dummy ignores its particles but the coupler validates it.
-const char* kScene = R"(
-[scene]
-name = "dummy_run"
-[run]
-end_time = 0.02
-output_interval = 0.005
-dp = 0.01
-dt0 = 0.001
-solver_timeout = 2.0
-[domain]
-min = [0.0, 0.0]
-max = [1.0, 1.0]
-[water]
-sound_speed = 10.0
-[[water.blocks]]
-shape = "box"
-min = [0.1, 0.1]
-max = [0.2, 0.2]
-)";
+const std::string kScene = dummy_water_scene("dummy_run",
+                                             "end_time = 0.02\n"
+                                             "output_interval = 0.005\n"
+                                             "dp = 0.01\n"
+                                             "dt0 = 0.001\n"
+                                             "solver_timeout = 2.0\n");
 
 struct CouplerRun {
   CommandResult result;

@@ -7,30 +7,18 @@
 
 #include <regex>
 
+#include "tests/support/dummy_scene.h"
 #include "tests/support/process_support.h"
 
 namespace porosph::testing {
 namespace {
 
-const char* kScene = R"(
-[scene]
-name = "security_run"
-[run]
-end_time = 0.02
-output_interval = 0.01
-dp = 0.01
-dt0 = 0.001
-solver_timeout = 5.0
-[domain]
-min = [0.0, 0.0]
-max = [1.0, 1.0]
-[water]
-sound_speed = 10.0
-[[water.blocks]]
-shape = "box"
-min = [0.1, 0.1]
-max = [0.2, 0.2]
-)";
+const std::string kScene = dummy_water_scene("security_run",
+                                             "end_time = 0.02\n"
+                                             "output_interval = 0.01\n"
+                                             "dp = 0.01\n"
+                                             "dt0 = 0.001\n"
+                                             "solver_timeout = 5.0\n");
 
 std::vector<std::string> run_argv(const std::string& dir, std::vector<std::string> extra,
                                   const std::string& solver = bin("dummy_solver") +

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include "tests/support/dummy_scene.h"
 #include "tests/support/process_support.h"
 
 namespace porosph::testing {
@@ -16,25 +17,12 @@ namespace {
 namespace fs = std::filesystem;
 
 // The water-only scene of coupler_run_test.cpp (the dummy ignores its particles).
-const char* kScene = R"(
-[scene]
-name = "ownership"
-[run]
-end_time = 0.02
-output_interval = 0.005
-dp = 0.01
-dt0 = 0.001
-solver_timeout = 30.0
-[domain]
-min = [0.0, 0.0]
-max = [1.0, 1.0]
-[water]
-sound_speed = 10.0
-[[water.blocks]]
-shape = "box"
-min = [0.1, 0.1]
-max = [0.2, 0.2]
-)";
+const std::string kScene = dummy_water_scene("ownership",
+                                             "end_time = 0.02\n"
+                                             "output_interval = 0.005\n"
+                                             "dp = 0.01\n"
+                                             "dt0 = 0.001\n"
+                                             "solver_timeout = 30.0\n");
 
 std::vector<std::string> dummy_run(const std::string& scene, const std::string& out,
                                    const std::string& dummy_flags = "",

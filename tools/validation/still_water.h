@@ -14,6 +14,8 @@
 
 #include <cmath>
 
+#include "fluid_solver/equation_of_state.h"
+
 namespace porosph::validation {
 
 /// The Tait EOS parameters of the water of a run.
@@ -22,10 +24,9 @@ struct StillWater {
 
   double b() const { return rho0 * c0 * c0 / gamma; }
 
-  /// p(d) of still water d below its free surface.
+  /// p(d) of still water d below its free surface: the solver's own TaitEos::still_water_pressure.
   double pressure(double depth) const {
-    const double r = gamma / (gamma - 1.0);
-    return b() * (std::pow(1.0 + rho0 * g * depth / (r * b()), r) - 1.0);
+    return fluid::TaitEos(rho0, c0, gamma).still_water_pressure(depth, g);
   }
 
   /// Phi(p) / g: the depth of still water at pressure p, the pressure part of the head.
