@@ -226,10 +226,12 @@ void CoupledStepLoop::send_commands(double dt, bool write_output, std::uint32_t 
     if (interaction_) {
       const bool soil = phase == "soil";
       // The accelerations already hold the implicit drag over dt (finish_step): the solvers add
-      // them explicitly, no rate is sent.
+      // them explicitly.
       interaction_->hand_over(soil, command.interaction_acceleration, command.saturation);
       // The porosity the water sees is output only: sent with the snapshots it goes into.
       if (!soil && write_output) interaction_->hand_over_porosity(command.porosity);
+      // The water's drag rates set how much artificial viscosity the drag replaces there.
+      if (!soil) interaction_->hand_over_water_rate(command.interaction_rate);
       overlap_region_for(states_.at(soil ? "water" : "soil"), scene_, command.other_region_min,
                          command.other_region_max);
     }

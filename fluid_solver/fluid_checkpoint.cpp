@@ -1,6 +1,7 @@
 // FluidSolver's checkpoint (docs/checkpoints.md): the particle arrays and every scalar of the
 // state that survives a step. Scratch buffers and the neighbour list are rebuilt by the next
 // compute_rates().
+#include <algorithm>
 #include <stdexcept>
 
 #include "fluid_solver/fluid_solver.h"
@@ -52,6 +53,9 @@ void FluidSolver<D>::restore_checkpoint(const io::CheckpointReader& in) {
   next_id_ = in.get_i64("next_id");
   interaction_nonzero_ = in.get_i64("interaction_nonzero") != 0;
   interaction_fresh_ = false;  // a checkpoint is taken after advance()
+  viscosity_cut_nonzero_ =
+      std::any_of(particles_.viscosity_cut.begin(), particles_.viscosity_cut.end(),
+                  [](double cut) { return cut > 0.0; });
   next_wall_removal_ = in.get_f64("next_wall_removal");
   dt_previous_ = in.get_f64("dt_previous");
   damping_.set_released(in.get_i64("damping_released") != 0);

@@ -54,7 +54,15 @@ struct FluidParams {
     p.eos = TaitEos(w.rho0, w.sound_speed, w.gamma);
     p.mu = w.viscosity;
     p.eta2 = 0.01 * p.h * p.h;
-    p.artificial = ArtificialViscosity{w.alpha, w.beta, p.h};
+    p.artificial = ArtificialViscosity{w.alpha, w.beta, p.h, 0.0};
+    if (w.artificial_viscosity_in_soil == "drag_limited") {
+      p.artificial.damping_rate =
+          ArtificialViscosity::kernel_damping_rate(w.alpha, w.sound_speed, p.h, D);
+    } else if (w.artificial_viscosity_in_soil != "full") {
+      throw std::invalid_argument(
+          "water.artificial_viscosity_in_soil: expected drag_limited or full, got '" +
+          w.artificial_viscosity_in_soil + "'");
+    }
     p.gravity = sph::to_vec<D>(s.run.gravity, "run.gravity");
     if (w.wall_condition != "no_slip" && w.wall_condition != "free_slip") {
       throw std::invalid_argument("water.wall_condition: expected no_slip or free_slip, got '" +

@@ -20,6 +20,10 @@ struct FluidParticles {
   std::vector<Vec> acceleration;       ///< internal dv/dt of this step (incl. gravity)
   std::vector<Vec> interaction;        ///< acceleration added by the coupler (last step)
   std::vector<Vec> wall_velocity;      ///< walls: velocity seen by viscous terms (Adami 2012)
+  /// The share s_a in [0, 1] of the artificial viscosity that the seepage drag replaces at a water
+  /// particle, from the drag rate the coupler sent with the last command (artificial_viscosity.h):
+  /// 0 in free water, for walls and after any resize (array resizes fill 0).
+  std::vector<double> viscosity_cut;
   std::vector<double> density, density_previous, density_rate;
   std::vector<double> pressure, sound_speed, mass;
   std::vector<double> remove_at;  ///< walls: removal time [s] (< 0: never); water: -1
@@ -103,7 +107,7 @@ struct FluidParticles {
     fn(p.position...), fn(p.velocity...), fn(p.velocity_previous...), fn(p.acceleration...);
     fn(p.interaction...), fn(p.wall_velocity...), fn(p.density...), fn(p.density_previous...);
     fn(p.density_rate...), fn(p.pressure...), fn(p.sound_speed...), fn(p.mass...);
-    fn(p.remove_at...), fn(p.id...), fn(p.fixed...), fn(p.zone...);
+    fn(p.remove_at...), fn(p.id...), fn(p.fixed...), fn(p.zone...), fn(p.viscosity_cut...);
   }
 
   template <class T>

@@ -34,6 +34,7 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
   const double* p = P.pressure.data();
   const double* c = P.sound_speed.data();
   const double* m = P.mass.data();
+  const double* cut = P.viscosity_cut.data();  // artificial_viscosity.h: 0 without soil
   const double mu = prm.mu, eta2 = prm.eta2;
   const ArtificialViscosity av = prm.artificial;
   const Vec g = prm.gravity;
@@ -81,8 +82,9 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
                                                 Vec(visc_vel[a] - visc_vel[b]));
         }
         if constexpr (kArtificial) {
-          acc += av.acceleration<D>(m[b], Vec(visc_vel[a] - visc_vel[b]), it->x_ab, inv_r2_eta2,
-                                    c_a, c[b], rho_a, rho[b], grad_w);
+          acc +=
+              av.acceleration<D>(m[b], Vec(visc_vel[a] - visc_vel[b]), it->x_ab, inv_r2_eta2, c_a,
+                                 c[b], rho_a, rho[b], grad_w, 1.0 - 0.5 * (cut[a] + cut[b]));
         }
       }
     }
@@ -104,7 +106,7 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
         }
         if constexpr (kArtificial) {
           acc += av.acceleration<D>(m[b], v_ab, it->x_ab, inv_r2_eta2, c_a, c[b], rho_a, rho[b],
-                                    grad_w);
+                                    grad_w, 1.0 - cut[a]);
         }
       }
     }

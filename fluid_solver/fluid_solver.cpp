@@ -73,7 +73,10 @@ template <int D>
 std::vector<std::string> FluidSolver<D>::active_terms() const {
   std::vector<std::string> terms = {"continuity", "pressure_gradient", "gravity"};
   if (params_.morris_on()) terms.push_back("morris_viscosity");
-  if (params_.artificial_on()) terms.push_back("artificial_viscosity");
+  if (params_.artificial_on()) {
+    terms.push_back("artificial_viscosity");
+    if (params_.artificial.damping_rate > 0.0) terms.push_back("artificial_viscosity_drag_limited");
+  }
   if (params_.diffusion_on()) terms.push_back("density_diffusion");
   if (params_.shifting_on()) terms.push_back("particle_shifting");
   if (particles_.wall_count() > 0)
@@ -230,6 +233,23 @@ void FluidSolver<D>::add_interaction(const std::vector<double>& acceleration) {
   }
   interaction_fresh_ = true;
   interaction_nonzero_ = true;
+}
+
+template <int D>
+void FluidSolver<D>::set_drag_rate(const std::vector<double>& rate) {
+  if (rate.empty() && !viscosity_cut_nonzero_) return;
+  if (!rate.empty() && rate.size() != overlap_index_.size()) {
+    throw std::invalid_argument("set_drag_rate: expected " + std::to_string(overlap_index_.size()) +
+                                " values, got " + std::to_string(rate.size()));
+  }
+  std::vector<double>& cut = particles_.viscosity_cut;
+  std::fill(cut.begin(), cut.end(), 0.0);
+  viscosity_cut_nonzero_ = false;
+  if (params_.artificial.damping_rate <= 0.0) return;  // "full", or no artificial viscosity
+  for (std::size_t i = 0; i < rate.size(); ++i) {
+    cut[overlap_index_[i]] = params_.artificial.cut(rate[i]);
+    viscosity_cut_nonzero_ = viscosity_cut_nonzero_ || cut[overlap_index_[i]] > 0.0;
+  }
 }
 
 template <int D>

@@ -50,6 +50,11 @@ class FluidSolver {
   /// Adds accelerations (n*D, row-major) to the overlap particles of the last fill_state, same
   /// order. Throws std::invalid_argument on a size mismatch.
   void add_interaction(const std::vector<double>& acceleration);
+  /// The seepage drag rates lambda [1/s] of the overlap particles of the last fill_state
+  /// (StepCommand.interaction_rate; empty: no drag): they set how much of the artificial
+  /// viscosity the drag replaces in the next compute_rates() (artificial_viscosity.h). Throws
+  /// std::invalid_argument on a size mismatch.
+  void set_drag_rate(const std::vector<double>& rate);
   /// The soil porosity around the overlap particles of the last fill_state (StepCommand.porosity,
   /// sent before a snapshot; empty: no soil near), for the snapshot's `porosity` and
   /// `pore_velocity` fields (scenes with soil; pore_fields.h). Throws on a size mismatch.
@@ -138,9 +143,10 @@ class FluidSolver {
   double outflow_mass_ = 0.0;  ///< mass of the particles removed so far [kg]
   std::int64_t next_id_ = 0;   ///< id of the next particle born in an inflow zone
   double dt_previous_ = 0.0;   ///< the last step's dt: the Verlet span is dt_previous + dt
-  bool interaction_fresh_ = false;    ///< add_interaction called since the last advance
-  bool interaction_nonzero_ = false;  ///< particles_.interaction may hold non-zero values
-  double next_wall_removal_ = -1.0;   ///< earliest pending wall removal time (< 0: none)
+  bool interaction_fresh_ = false;      ///< add_interaction called since the last advance
+  bool interaction_nonzero_ = false;    ///< particles_.interaction may hold non-zero values
+  bool viscosity_cut_nonzero_ = false;  ///< particles_.viscosity_cut may hold non-zero values
+  double next_wall_removal_ = -1.0;     ///< earliest pending wall removal time (< 0: none)
   double physics_seconds_ = 0.0;
 
   std::vector<std::int32_t> overlap_index_;

@@ -63,6 +63,7 @@ InitialParticles<D> initial_particles(const scene::Scene& s, const FluidParams<D
     P.velocity[i] = P.zone[i] >= 0 ? zones.velocity(P.zone[i], 0.0) : Vec::Zero();
     P.velocity_previous[i] = P.velocity[i];
     P.acceleration[i] = P.interaction[i] = P.wall_velocity[i] = Vec::Zero();
+    P.viscosity_cut[i] = 0.0;
     P.density[i] = params.eos.rho0();
     P.pressure[i] = P.density_rate[i] = 0.0;
     P.sound_speed[i] = params.eos.c0();

@@ -106,8 +106,8 @@ struct StepCommand {
   std::uint32_t output_index = 0;
   bool stop = false;
   std::vector<double> interaction_acceleration;  ///< per overlap particle, n*D (may be empty)
-  /// Per overlap particle: lambda = -d(interaction acceleration)/d(own velocity) [1/s] (empty:
-  /// explicit drag).
+  /// Water only, per overlap particle: the seepage drag rate lambda = -d(interaction
+  /// acceleration)/d(own velocity) [1/s] (empty: no drag, or the explicit drag).
   std::vector<double> interaction_rate;
   std::vector<double> saturation;  ///< soil only
   /// Water only, with write_output: the soil porosity around each overlap particle (1 in free

@@ -10,7 +10,8 @@
 // snapshot_fields(), time(), step(), write_checkpoint(io::CheckpointWriter&),
 // restore_checkpoint(const io::CheckpointReader&); a soil solver also
 // set_saturation(const std::vector<double>&); a solver with set_porosity(const
-// std::vector<double>&) (the water solver) gets StepCommand.porosity before each snapshot.
+// std::vector<double>&) (the water solver) gets StepCommand.porosity before each snapshot, and one
+// with set_drag_rate(const std::vector<double>&) StepCommand.interaction_rate every step.
 // Checkpoints (docs/checkpoints.md): a command with write_checkpoint makes the loop advance, then
 // write OUT/checkpoint/<phase>_NNNN.h5 (the solver's state plus the overlap zone of that command)
 // and confirm it in the next state; Setup.restore_checkpoint makes it restore one before the first
@@ -50,6 +51,15 @@ struct has_set_porosity : std::false_type {};
 template <class Solver>
 struct has_set_porosity<Solver, std::void_t<decltype(std::declval<Solver&>().set_porosity(
                                     std::declval<const std::vector<double>&>()))>>
+    : std::true_type {};
+
+/// True for a solver with set_drag_rate(const std::vector<double>&) (the water solver: the
+/// seepage drag rates of its overlap particles, StepCommand.interaction_rate).
+template <class Solver, class = void>
+struct has_set_drag_rate : std::false_type {};
+template <class Solver>
+struct has_set_drag_rate<Solver, std::void_t<decltype(std::declval<Solver&>().set_drag_rate(
+                                     std::declval<const std::vector<double>&>()))>>
     : std::true_type {};
 
 /// Writes the snapshot a command asks for, after handing a solver that takes it the command's
@@ -210,6 +220,8 @@ int run_solver_loop_unguarded(CouplingClient& client, Solver& solver, io::Snapsh
         solver.add_interaction(command.interaction_acceleration);
       }
       if constexpr (has_set_saturation<Solver>::value) solver.set_saturation(command.saturation);
+      if constexpr (has_set_drag_rate<Solver>::value)
+        solver.set_drag_rate(command.interaction_rate);
       solver.advance(command.dt);
       if (command.write_checkpoint) {
         write_solver_checkpoint(setup, command.checkpoint_index, solver, overlap_min, overlap_max);

@@ -108,6 +108,9 @@ struct WaterPhase {
   int density_filter_every = 0;    ///< Shepard density re-initialisation every N steps; 0: off
   double density_diffusion = 0.1;  ///< delta of the density diffusion term (delta-SPH); 0: off
   std::string density_diffusion_correction = "linear";  ///< "linear" | "hydrostatic"
+  /// "drag_limited" (the seepage drag replaces the artificial viscosity where it damps faster;
+  /// fluid_solver/artificial_viscosity.h) | "full"
+  std::string artificial_viscosity_in_soil = "drag_limited";
   double particle_shifting = 0.0;   ///< A of the Fickian particle shifting (Lind 2012); 0: off
   bool hydrostatic_initial = true;  ///< initial density from hydrostatic pressure (inverse eq. 4)
   std::string initial_velocity = "none";   ///< "none" (at rest) | "taylor_green"

@@ -153,6 +153,17 @@ void add_water(SceneSchema& s) {
                        .fallback("0.0")
                        .at_least(0)
                        .doc("Monaghan artificial viscosity beta."));
+  s.keys.push_back(
+      Key("water.artificial_viscosity_in_soil", T::String)
+          .fallback("\"drag_limited\"")
+          .one_of({"drag_limited", "full"})
+          .doc("The artificial viscosity inside soil. \"drag_limited\": the share "
+               "min(1, lambda / r_av) of it is removed at a water particle whose seepage drag "
+               "rate lambda (from the coupler) approaches the rate r_av = alpha c pi^2 / "
+               "(2 (D + 2) h) at which it damps kernel-scale noise, so the noise is damped at "
+               "least as fast as without soil and a Darcy flow feels no artificial viscosity "
+               "(fluid_solver/artificial_viscosity.h); \"full\": everywhere as in free water "
+               "(the discharge under the seepage weir 2 % lower at dp 10 mm)."));
   s.keys.push_back(Key("water.gamma", T::Float)
                        .fallback("7.0")
                        .at_least(1)

@@ -139,6 +139,8 @@ InteractionSummary SoilWaterInteraction::compute(const coupling::StepState& wate
     out_.soil_acceleration.clear();
     out_.saturation.clear();
     out_.water_porosity.clear();
+    out_.water_rate.clear();
+    out_.soil_rate.clear();
     return {};
   }
   forces_ = !(time < damping_duration_);

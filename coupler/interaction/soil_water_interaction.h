@@ -116,6 +116,10 @@ class SoilWaterInteraction {
   /// Hands the water's porosity of the last compute (InteractionOutputs::water_porosity) to a
   /// step command, by swapping buffers like hand_over().
   void hand_over_porosity(std::vector<double>& porosity) { porosity.swap(out_.water_porosity); }
+  /// Hands the water's drag rates of the last compute (InteractionOutputs::water_rate; empty
+  /// without implicit drag) to a step command, by swapping buffers like hand_over(): the water
+  /// solver scales its artificial viscosity by them (fluid_solver/artificial_viscosity.h).
+  void hand_over_water_rate(std::vector<double>& rate) { rate.swap(out_.water_rate); }
   /// The interaction terms of the scene (run.json interaction.terms; interaction_terms()).
   const std::vector<std::string>& terms() const { return terms_; }
 
