@@ -162,6 +162,9 @@ std::string coupler_state_json(const RunRecord& r, const LoopState& loop) {
        {{"output_index", loop.output_index},
         {"next_output_time", exact(loop.next_output_time)},
         {"last_output_time", exact(loop.last_output_time)},
+        {"row_index", loop.row_index},
+        {"next_row_time", exact(loop.next_row_time)},
+        {"last_row_time", exact(loop.last_row_time)},
         {"outputs_pending", loop.outputs_pending},
         {"controller_dt", exact(loop.controller_dt)}}},
       {"record",
@@ -204,6 +207,15 @@ void restore_coupler_state(const std::string& text, const std::string& source, R
     loop.output_index = l.at("output_index").get<std::uint32_t>();
     loop.next_output_time = exact_of(l.at("next_output_time"));
     loop.last_output_time = exact_of(l.at("last_output_time"));
+    if (l.contains("row_index")) {
+      loop.row_index = l.at("row_index").get<std::uint64_t>();
+      loop.next_row_time = exact_of(l.at("next_row_time"));
+      loop.last_row_time = exact_of(l.at("last_row_time"));
+    } else {  // a checkpoint from before run.timeseries_interval: one row per snapshot
+      loop.row_index = loop.output_index;
+      loop.next_row_time = loop.next_output_time;
+      loop.last_row_time = loop.last_output_time;
+    }
     loop.outputs_pending = l.at("outputs_pending").get<bool>();
     loop.controller_dt = exact_of(l.at("controller_dt"));
     const json& j = in.at("record");

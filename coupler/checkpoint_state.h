@@ -14,9 +14,12 @@ namespace porosph::coupler {
 
 /// What CoupledStepLoop carries from one step to the next besides the run record.
 struct LoopState {
-  std::uint32_t output_index = 0;  ///< index of the next snapshot (= rows in timeseries.csv)
+  std::uint32_t output_index = 0;  ///< index of the next snapshot
   double next_output_time = 0.0;
   double last_output_time = -1.0;
+  std::uint64_t row_index = 0;  ///< rows written to timeseries.csv (run.timeseries_interval)
+  double next_row_time = 0.0;
+  double last_row_time = -1.0;
   bool outputs_pending = false;  ///< run.json / run.xdmf to refresh after the next states
   double controller_dt = 0.0;    ///< TimeStepController::current()
 };

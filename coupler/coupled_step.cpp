@@ -49,7 +49,7 @@ CoupledStepLoop::CoupledStepLoop(const scene::Scene& scene, SolverHub& hub, RunR
     loop_ = *resumed;
     controller_.restore(resumed->controller_dt);
     timeseries_ =
-        std::make_unique<io::TimeSeriesCsv>(csv, timeseries_columns(), resumed->output_index);
+        std::make_unique<io::TimeSeriesCsv>(csv, timeseries_columns(), resumed->row_index);
   } else {
     timeseries_ = std::make_unique<io::TimeSeriesCsv>(csv, timeseries_columns());
   }
@@ -278,6 +278,8 @@ void CoupledStepLoop::wait_for_goodbyes() {
 void CoupledStepLoop::run(ProgressLine& progress) {
   const double end_time = scene_.run.end_time;
   const double interval = scene_.run.output_interval;
+  const double row_interval =
+      scene_.run.timeseries_interval > 0.0 ? scene_.run.timeseries_interval : interval;
   const double end_tolerance = 1e-9 * end_time;
   const auto max_steps = static_cast<std::uint64_t>(std::max(0L, scene_.run.max_steps));
   for (;;) {
@@ -292,6 +294,8 @@ void CoupledStepLoop::run(ProgressLine& progress) {
     const bool stop = record_.time >= end_time - end_tolerance || step_limit_reached;
     bool write = record_.time >= loop_.next_output_time - 1e-9 * interval;
     if (stop && loop_.last_output_time != record_.time) write = true;  // always a final snapshot
+    bool row = record_.time >= loop_.next_row_time - 1e-9 * row_interval;
+    if (stop && loop_.last_row_time != record_.time) row = true;  // and a final row
     // Eq. 21 with the interaction of this step; the solvers' own dt_force already includes the
     // interaction of the previous step.
     const double dt_interaction = compute_interaction();
@@ -305,8 +309,13 @@ void CoupledStepLoop::run(ProgressLine& progress) {
         record_.phases[phase].snapshots.push_back(
             {loop_.output_index, record_.time, states_.at(phase).diagnostics.particle_count});
       }
-      append_timeseries_row(dt);  // cumulative impulses up to t: before this step's
       loop_.last_output_time = record_.time;
+    }
+    if (row) {
+      append_timeseries_row(dt);  // cumulative impulses up to t: before this step's
+      loop_.last_row_time = record_.time;
+      ++loop_.row_index;
+      loop_.next_row_time = static_cast<double>(loop_.row_index) * row_interval;
     }
     if (interaction_ && interaction_summary_.forces) {
       interaction_->finish_step(states_.at("water"), states_.at("soil"), dt);

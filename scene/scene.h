@@ -40,11 +40,12 @@ struct RunSettings {
   double end_time = 1.0;         ///< [s]
   long max_steps = 0;            ///< stop after this many steps even before end_time; 0: no limit
   double output_interval = 0.1;  ///< [s]
-  double dp = 0.01;              ///< particle spacing [m]
-  double h_factor = 1.2;         ///< smoothing length h = h_factor * dp
-  double dt0 = 1e-4;             ///< initial (and largest) time step [s], eq. 21 / Fig. 1
-  double cfl = 0.2;              ///< C_cfl in dt_cfl = C_cfl h / (c + |v|max)
-  double c_a = 0.25;             ///< C_a of eq. 21 (0.005 is the coupled default)
+  double timeseries_interval = 0.0;      ///< [s] between timeseries.csv rows; 0: output_interval
+  double dp = 0.01;                      ///< particle spacing [m]
+  double h_factor = 1.2;                 ///< smoothing length h = h_factor * dp
+  double dt0 = 1e-4;                     ///< initial (and largest) time step [s], eq. 21 / Fig. 1
+  double cfl = 0.2;                      ///< C_cfl in dt_cfl = C_cfl h / (c + |v|max)
+  double c_a = 0.25;                     ///< C_a of eq. 21 (0.005 is the coupled default)
   double viscous_coefficient = 0.125;    ///< dt_visc = coeff h^2 / nu
   bool dt_smoothing = true;              ///< Fig. 1 smoothing on/off (off: dt = min(limits, dt0))
   int euler_every = 40;                  ///< modified Verlet: an Euler step every N steps

@@ -62,6 +62,7 @@ Scene build_scene(const toml::table& root) {
   r.end_time = *run["end_time"].value<double>();
   r.max_steps = static_cast<long>(*run["max_steps"].value<int64_t>());
   r.output_interval = *run["output_interval"].value<double>();
+  r.timeseries_interval = run["timeseries_interval"].value<double>().value_or(0.0);
   r.dp = *run["dp"].value<double>();
   r.h_factor = *run["h_factor"].value<double>();
   r.dt0 = *run["dt0"].value<double>();

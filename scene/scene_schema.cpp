@@ -40,7 +40,18 @@ void add_scene_and_run(SceneSchema& s) {
                        .unit("s")
                        .required()
                        .above(0)
-                       .doc("Simulated time between two snapshots / time-series rows."));
+                       .doc("Simulated time between two snapshots (and time-series rows unless "
+                            "run.timeseries_interval says otherwise)."));
+  s.keys.push_back(
+      Key("run.timeseries_interval", T::Float)
+          .unit("s")
+          .fallback("0.0")
+          .at_least(0)
+          .doc("Simulated time between two rows of timeseries.csv (every built-in column and "
+               "observable at that instant), independent of the snapshots; 0: "
+               "run.output_interval, one row per snapshot. A row costs no snapshot, so a "
+               "finely sampled history of a long run stays small. The last state always gets "
+               "a row."));
   s.keys.push_back(Key("run.dp", T::Float)
                        .unit("m")
                        .required()

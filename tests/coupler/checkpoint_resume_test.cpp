@@ -20,7 +20,8 @@ namespace fs = std::filesystem;
 
 constexpr double kRelativeTolerance = 1e-12;
 
-/// The water scene: ~1600 steps, checkpoints at t = 0.01, 0.02, 0.03 s.
+/// The water scene: ~1600 steps, checkpoints at t = 0.01, 0.02, 0.03 s; snapshots every 4 ms
+/// (the scene's output_interval), time-series rows every 1 ms (run.timeseries_interval).
 std::vector<std::string> dam_break_run(const std::string& out) {
   return {bin("coupler"),
           "run",
@@ -33,7 +34,9 @@ std::vector<std::string> dam_break_run(const std::string& out) {
           "--set",
           "run.end_time=0.04",
           "--set",
-          "run.checkpoint_interval=0.01"};
+          "run.checkpoint_interval=0.01",
+          "--set",
+          "run.timeseries_interval=0.001"};
 }
 
 /// The coupled scene: water driven up through a free sand layer on fixed filters (the quick
@@ -153,11 +156,11 @@ const std::string& reference_run(const std::string& name,
   return done[name] = dir + "/out";
 }
 
-/// Rows in timeseries.csv before the latest checkpoint (its output index).
+/// Rows in timeseries.csv before the latest checkpoint (its row index).
 std::size_t rows_before_checkpoint(const std::string& out) {
   const auto manifest = read_json(out + "/checkpoint/latest.json");
   const auto state = read_json(out + "/checkpoint/" + manifest.at("coupler").get<std::string>());
-  return state.at("loop").at("output_index").get<std::size_t>();
+  return state.at("loop").at("row_index").get<std::size_t>();
 }
 
 /// Starts the run, SIGKILLs the coupler once the first checkpoint is complete and a row past it is
@@ -199,6 +202,15 @@ TEST(CheckpointResume, KilledWaterRunResumesToTheSameResult) {
   expect_same_snapshots(reference, out, "fluid.h5",
                         {"position", "velocity", "density", "pressure"});
   EXPECT_NE(read_text(out + "/run.xdmf").find("000010"), std::string::npos);
+  // Rows at t = 0, 1, ..., 40 ms; snapshots at 0, 4, ..., 40 ms: independent of each other.
+  const auto rows = csv_rows(out + "/timeseries.csv");
+  ASSERT_EQ(rows.size(), 41u);
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    // The row is the first step boundary at or past r ms (dt ~ 2.5e-5 s).
+    EXPECT_GE(rows[r][0], 1e-3 * static_cast<double>(r) - 1e-12) << r;
+    EXPECT_LT(rows[r][0], 1e-3 * static_cast<double>(r) + 1e-4) << r;
+  }
+  EXPECT_EQ(io::SnapshotReader(out + "/fluid.h5").snapshots().size(), 11u);
 }
 
 TEST(CheckpointResume, KilledCoupledRunResumesSoilStateAndLedger) {

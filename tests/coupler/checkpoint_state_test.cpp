@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <thread>
 
 #include "coupler/checkpoint.h"
@@ -75,10 +76,16 @@ TEST(CouplerCheckpointState, RoundTripsBitForBit) {
   loop.last_output_time = 0.30000000000000004;
   loop.outputs_pending = true;
   loop.controller_dt = 7.123456789012345e-5;
+  loop.row_index = 17;
+  loop.next_row_time = 0.17;
+  loop.last_row_time = 0.16000000000000003;
   RunRecord out;
   LoopState loop_out;
   restore_coupler_state(coupler_state_json(in, loop), "test", out, loop_out);
   EXPECT_EQ(loop_out.output_index, 4u);
+  EXPECT_EQ(loop_out.row_index, 17u);
+  EXPECT_EQ(loop_out.next_row_time, loop.next_row_time);
+  EXPECT_EQ(loop_out.last_row_time, loop.last_row_time);
   EXPECT_EQ(loop_out.next_output_time, loop.next_output_time);
   EXPECT_EQ(loop_out.last_output_time, loop.last_output_time);
   EXPECT_TRUE(loop_out.outputs_pending);
@@ -107,6 +114,26 @@ TEST(CouplerCheckpointState, RoundTripsBitForBit) {
   EXPECT_EQ(water.reported.physics_seconds, 9.75);
   EXPECT_EQ(water.reported.communication_seconds, 2.25);
   EXPECT_THROW(restore_coupler_state("{}", "test", out, loop_out), std::runtime_error);
+}
+
+// A checkpoint written before run.timeseries_interval (no row fields) resumes with one row per
+// snapshot, as such a run wrote them.
+TEST(CouplerCheckpointState, OlderStateWithoutRowsTakesTheSnapshotCounters) {
+  LoopState loop;
+  loop.output_index = 6;
+  loop.next_output_time = 0.6;
+  loop.last_output_time = 0.5;
+  auto state = nlohmann::json::parse(coupler_state_json(sample_record(), loop));
+  for (const char* key : {"row_index", "next_row_time", "last_row_time"}) {
+    ASSERT_TRUE(state.at("loop").contains(key)) << key;
+    state["loop"].erase(key);
+  }
+  RunRecord out;
+  LoopState restored;
+  restore_coupler_state(state.dump(), "test", out, restored);
+  EXPECT_EQ(restored.row_index, 6u);
+  EXPECT_EQ(restored.next_row_time, 0.6);
+  EXPECT_EQ(restored.last_row_time, 0.5);
 }
 
 // A resumed run's run.json counts the solver time of all its segments: the reports summed up to
