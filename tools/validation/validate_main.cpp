@@ -3,6 +3,7 @@
 //   porosph_validate hydrostatic_tank RUN_DIR
 //   porosph_validate still_bed RUN_DIR
 //   porosph_validate seepage_weir RUN_DIR [--window S]
+//   porosph_validate seepage_embankment RUN_DIR [--window S] [--series FILE]
 //   porosph_validate soil_column RUN_DIR
 //   porosph_validate granular_collapse RUN_DIR
 //   porosph_validate darcy_column RUN_DIR
@@ -239,8 +240,16 @@ int main(int argc, char** argv) {
   auto* weir = app.add_subcommand("seepage_weir", "seepage under a weir vs the FV reference");
   weir->add_option("run_dir", run_dir)->required();
   double weir_window = 0.0;
+  std::string series;
   weir->add_option("--window", weir_window, "averaging window at the end of the run [s]")
       ->default_str("the last quarter");
+  auto* embankment = app.add_subcommand(
+      "seepage_embankment", "unconfined seepage through a dam vs Baiocchi and Dupuit-Charnyi");
+  embankment->add_option("run_dir", run_dir)->required();
+  embankment->add_option("--window", weir_window, "averaging window at the end of the run [s]")
+      ->default_str("the last quarter");
+  embankment->add_option("--series", series,
+                         "write the phreatic line (x, SPH, Baiocchi, exact) as CSV to this file");
   auto* column = app.add_subcommand("soil_column", "dry soil column: vertical stress, K0");
   column->add_option("run_dir", run_dir)->required();
   auto* collapse = app.add_subcommand("granular_collapse", "run-out, height, failure angle");
@@ -251,7 +260,6 @@ int main(int argc, char** argv) {
   bed->add_option("run_dir", run_dir)->required();
   double window = 1.0;
   bed->add_option("--window", window, "steady window at the end of the run [s]");
-  std::string series;
   auto* rockfill = app.add_subcommand("rockfill_overtopping", "B parameter, phreatic levels");
   rockfill->add_option("run_dir", run_dir)->required();
   rockfill->add_option("--series", series, "write B(t) as CSV to this file");
@@ -303,6 +311,12 @@ int main(int argc, char** argv) {
     }
     if (*still_bed) return v::report_still_bed(v::check_still_bed(run_dir));
     if (*weir) return v::report_seepage_weir(v::check_seepage_weir(run_dir, weir_window));
+    if (*embankment) {
+      const auto c = v::check_seepage_embankment(run_dir, weir_window);
+      write_series(series, {"x", "sph", "baiocchi", "exact"},
+                   {&c.profile_x, &c.profile_surface, &c.profile_reference, &c.profile_exact});
+      return v::report_seepage_embankment(c);
+    }
     return v::report_hydrostatic(v::check_hydrostatic(run_dir), print_rows);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "porosph_validate: %s\n", e.what());

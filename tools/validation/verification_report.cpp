@@ -157,4 +157,58 @@ int report_seepage_weir(const SeepageWeirCheck& c) {
   return q_met && p_met && i_met ? 0 : 1;
 }
 
+int report_seepage_embankment(const SeepageEmbankmentCheck& c) {
+  const double h1 = c.head_upstream;
+  std::printf(
+      "seepage_embankment: dp %.4g m, K = %.4g m/s, L = %.4g m; averaged over %zu outputs, t = "
+      "%.3f .. %.3f s\n"
+      "pool heads (measured): h1 = %.5f m (levels held %.4g / %.4g m), h2 = %.5f m; upstream pool"
+      " head in its top / bottom quarter %.5f / %.5f m\n"
+      "discharge through the dam: %.5e m^2/s; Dupuit-Charnyi K (h1^2 - h2^2) / (2 L) = %.5e "
+      "m^2/s: error %+.2f%% (target 1%%)\nslabs (x from the upstream face):",
+      c.dp, c.conductivity, c.length, c.outputs, c.window_start, c.window_end, h1, c.level_upstream,
+      c.level_downstream, c.head_downstream, c.head_upstream_top, c.head_upstream_bottom,
+      c.discharge, c.discharge_reference, 100 * c.discharge_error());
+  for (std::size_t k = 0; k < c.slab_x.size(); ++k)
+    std::printf(" %.3f m: %+.2f%%", c.slab_x[k],
+                100 * (c.slab_discharge[k] / c.discharge_reference - 1.0));
+  double q_min = 1e300, q_max = -1e300;
+  for (double q : c.discharge_history) q_min = std::min(q_min, q), q_max = std::max(q_max, q);
+  std::printf("\ndischarge over the window: %.5e .. %.5e m^2/s (spread %.1f%%)\n", q_min, q_max,
+              100 * (q_max - q_min) / c.discharge);
+  std::printf(
+      "phreatic line (top + dp/2; volume / width beside it) against Baiocchi 256 x 192 (128 x 96 "
+      "and"
+      " Polubarinova-Kochina beside it), errors / h1:\n%8s %9s %9s %9s %9s %9s %8s %8s\n",
+      "x", "SPH", "volume", "Baiocchi", "128x96", "exact", "err/h1", "drift");
+  auto row = [&](const PhreaticStation& s) {
+    std::printf("%8.4f %9.5f %9.5f %9.5f %9.5f %9.5f %7.2f%% %7.2f%%\n", s.x, s.surface, s.volume,
+                s.reference, s.coarse, s.exact, 100 * (s.surface - s.reference) / h1,
+                100 * s.drift / h1);
+  };
+  for (const auto& s : c.stations) row(s);
+  std::printf("last column (x = L - dp/2):\n");
+  row(c.exit);
+  std::printf(
+      "exact exit point h_s = %.5f m (the surface at L - dp/2 lies %.5f m above it); water in the"
+      " dam detached from the water table: %.1f particles per output\n",
+      c.exit_point_exact, c.exit.exact - c.exit_point_exact, c.detached);
+  // Targets of issue 30 item 5: discharge within 1 %, phreatic line within 3 % of h1.
+  const bool q_met = std::abs(c.discharge_error()) <= 0.01;
+  const bool line_met = c.max_surface_error() <= 0.03;
+  const bool exit_met = std::abs(c.exit_error()) <= 0.03;
+  summary("discharge through the dam", fmt("%.5e m^2/s", c.discharge),
+          fmt("%.5e m^2/s (Dupuit-Charnyi, exact)", c.discharge_reference),
+          fmt("%+.2f %%", 100 * c.discharge_error()), "1 %", q_met);
+  summary("phreatic line / h1 (max over x/L 0.1 .. 0.9)",
+          fmt("%.2f %%", 100 * c.max_surface_error()), "Baiocchi, 256 x 192",
+          fmt("%.2f %%", 100 * c.max_surface_error()), "3 % of h1", line_met);
+  summary("exit height (last column, x = L - dp/2)", fmt("%.4f m", c.exit.surface),
+          fmt("%.4f m (Baiocchi at L - dp/2)", c.exit.reference),
+          fmt("%+.2f %% of h1", 100 * c.exit_error()), "3 % of h1", exit_met);
+  summary("upstream pool head h1", fmt("%.4f m", h1), fmt("%.4g m (level held)", c.level_upstream),
+          fmt("%+.4f m", h1 - c.level_upstream), "-", -1);
+  return q_met && line_met && exit_met ? 0 : 1;
+}
+
 }  // namespace porosph::validation

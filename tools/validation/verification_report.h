@@ -3,6 +3,7 @@
 // tools/validation/report.py reads (the format of validate_main.cpp's print_summary).
 #pragma once
 
+#include "tools/validation/seepage_embankment_check.h"
 #include "tools/validation/seepage_weir_check.h"
 #include "tools/validation/still_water_check.h"
 #include "tools/validation/verification_checks.h"
@@ -19,5 +20,7 @@ int report_hydrostatic(const HydrostaticCheck& h, bool rows);
 int report_still_bed(const StillBedCheck& c);
 /// Prints the seepage-under-a-weir verdict; 0 when the targets are met.
 int report_seepage_weir(const SeepageWeirCheck& c);
+/// Prints the seepage-through-an-embankment verdict; 0 when the targets are met.
+int report_seepage_embankment(const SeepageEmbankmentCheck& c);
 
 }  // namespace porosph::validation
