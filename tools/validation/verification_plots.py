@@ -4,6 +4,8 @@ several resolutions against the closed form, from their timeseries.csv and run.j
 
   tools/validation/verification_plots.py taylor_green RUN_DIR [RUN_DIR ...]
   tools/validation/verification_plots.py elastic_column RUN_DIR [RUN_DIR ...]
+  tools/validation/verification_plots.py seepage_embankment CSV [CSV ...]
+    (CSV: porosph_validate seepage_embankment RUN --series CSV, one per resolution)
 
 writes docs/validation/<case>.png (or --out FILE)."""
 import argparse
@@ -84,14 +86,33 @@ def elastic_column(runs, ax):
     ax.set_title("Elastic column loaded suddenly by gravity")
 
 
+def seepage_embankment(files, ax):
+    """The phreatic line of each run (top of the water + dp/2 per particle column, averaged over
+    the window) against Baiocchi's free surface for that run's measured pool heads."""
+    for k, path in enumerate(files):
+        with open(path) as f:
+            rows = list(csv.reader(f))
+        d = np.array([[float(x) for x in r] for r in rows[1:]])
+        x, sph, ref = d[:, 0], d[:, 1], d[:, 2]
+        line = ax.plot(x, sph, "o", ms=3, label="SPH, dp = %.3g m" % (x[1] - x[0]))
+        ax.plot(x, ref, "-", color=line[0].get_color(), lw=1,
+                label="line: Baiocchi for that run's h1, h2" if k == len(files) - 1 else None)
+    ax.axvline(x[-1] + 0.5 * (x[1] - x[0]), color="0.5", lw=0.8)
+    ax.set_xlabel("x from the upstream face [m]")
+    ax.set_ylabel("phreatic surface [m]")
+    ax.set_title("Unconfined seepage through a rectangular dam, L = 0.4 m")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("case", choices=["taylor_green", "elastic_column"])
+    parser.add_argument("case", choices=["taylor_green", "elastic_column", "seepage_embankment"])
     parser.add_argument("runs", nargs="+")
     parser.add_argument("--out", help="PNG file (default docs/validation/<case>.png)")
     args = parser.parse_args()
     fig, ax = plt.subplots(figsize=(7, 4.2))
-    (taylor_green if args.case == "taylor_green" else elastic_column)(args.runs, ax)
+    plots = {"taylor_green": taylor_green, "elastic_column": elastic_column,
+             "seepage_embankment": seepage_embankment}
+    plots[args.case](args.runs, ax)
     ax.legend(fontsize=8)
     ax.grid(alpha=0.3)
     fig.tight_layout()
