@@ -33,6 +33,8 @@ struct FluidParams {
   int euler_every = 40;            ///< modified Verlet: Euler step period
   double cfl = 0.2, c_a = 0.25, viscous_coefficient = 0.125;
   bool hydrostatic_initial = true;
+  /// run.kernel_gradient = "particle": per-particle gradient renormalisation (particle_gradient.h).
+  bool particle_gradient = false;
 
   bool morris_on() const { return mu > 0.0; }
   bool artificial_on() const { return artificial.alpha > 0.0 || artificial.beta > 0.0; }
@@ -78,6 +80,7 @@ struct FluidParams {
     p.c_a = s.run.c_a;
     p.viscous_coefficient = s.run.viscous_coefficient;
     p.hydrostatic_initial = w.hydrostatic_initial;
+    p.particle_gradient = s.run.kernel_gradient == "particle";
     return p;
   }
 };

@@ -38,6 +38,9 @@ struct FluidParticles {
   /// 1 / rho and m / rho of every particle, from density and mass at the start of each rate
   /// evaluation (fluid_rates.h), so that the pair loop multiplies instead of dividing.
   std::vector<double> inverse_density, volume;
+  /// Per water particle: the kernel gradient's renormalisation s_a (particle_gradient.h; 1 unless
+  /// run.kernel_gradient = "particle"), filled at the start of each rate evaluation.
+  std::vector<double> gradient_scale;
   /// Renormalised gradient of the density diffusion's departure potential (water particles only;
   /// density_diffusion_gradient.h), filled before the pair loop when the diffusion is on.
   std::vector<Vec> departure_gradient;

@@ -8,6 +8,7 @@
 #include "fluid_solver/continuity.h"
 #include "fluid_solver/density_diffusion.h"
 #include "fluid_solver/density_diffusion_gradient.h"
+#include "fluid_solver/particle_gradient.h"
 #include "fluid_solver/pressure_force.h"
 #include "fluid_solver/viscosity_morris.h"
 #include "sph/kernels.h"
@@ -34,7 +35,9 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
   const double* p = P.pressure.data();
   const double* c = P.sound_speed.data();
   const double* m = P.mass.data();
-  const double* cut = P.viscosity_cut.data();  // artificial_viscosity.h: 0 without soil
+  const double* cut = P.viscosity_cut.data();
+  const double* scale = P.gradient_scale.data();  // particle_gradient.h: 1 unless "particle"  //
+                                                  // artificial_viscosity.h: 0 without soil
   const double mu = prm.mu, eta2 = prm.eta2;
   const ArtificialViscosity av = prm.artificial;
   const Vec g = prm.gravity;
@@ -63,7 +66,7 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
     for (auto it = nl.begin(a); it != nl.mid(a); ++it) {
       const std::int32_t b = it->b;
       const double grad_factor = kernel.grad_factor(it->r);
-      const Vec grad_w = grad_factor * it->x_ab;
+      const Vec grad_w = (grad_factor * (0.5 * (scale[a] + scale[b]))) * it->x_ab;
       const Vec v_ab = v_a - vel[b];
       divergence += continuity_term<D>(volume[b], v_ab, grad_w);
       acc +=
@@ -92,7 +95,7 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
     for (auto it = nl.mid(a); it != nl.end(a); ++it) {
       const std::int32_t b = it->b;
       const double grad_factor = kernel.grad_factor(it->r);
-      const Vec grad_w = grad_factor * it->x_ab;
+      const Vec grad_w = (grad_factor * scale[a]) * it->x_ab;
       divergence += continuity_term<D>(volume[b], Vec(v_a - vel[b]), grad_w);
       acc +=
           pressure_acceleration<D>(m[b], pressure_sign * p_a, p[b], inv_rho_a, inv_rho[b], grad_w);
@@ -179,6 +182,11 @@ RateSummary compute_fluid_rates(const sph::NeighbourList<D>& neighbours, const K
                                 const FluidParams<D>& params, FluidParticles<D>& P,
                                 ViscousLevel level) {
   update_inverse_density_and_volume(P);
+  if (params.particle_gradient) {
+    ParticleGradient::compute(neighbours, kernel, P.n_free, P.volume, P.gradient_scale);
+  } else {
+    P.gradient_scale.assign(P.n_free, 1.0);
+  }
   if (params.morris_on())
     return dispatch_artificial<D, Kernel, true>(neighbours, kernel, params, P, level);
   return dispatch_artificial<D, Kernel, false>(neighbours, kernel, params, P, level);

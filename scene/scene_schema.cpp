@@ -122,11 +122,16 @@ void add_scene_and_run(SceneSchema& s) {
   s.keys.push_back(
       Key("run.kernel_gradient", T::String)
           .fallback("\"lattice\"")
-          .one_of({"lattice", "plain"})
+          .one_of({"lattice", "plain", "particle"})
           .doc("\"lattice\": dW/dr divided by the kernel's gradient sum on the initial lattice "
                "(0.9908 for the cubic spline at h = 1.2 dp), so that gradients of linear fields "
                "are exact there (Bonet & Lok 1999, eq. 27; sph/lattice_gradient.h); \"plain\": "
-               "the kernel as published, whose gradients are that factor too small."));
+               "the kernel as published, whose gradients are that factor too small; "
+               "\"particle\": \"lattice\" and, for the water, each particle's gradient "
+               "renormalised by D / tr(L) where its kernel support is full "
+               "(fluid_solver/particle_gradient.h), so that a lattice that rearranges in a flow "
+               "keeps its pressure gradients (seepage under the weir: heads within 1.7 % of dh "
+               "instead of 15 % once the sand's water lattice turned hexagonal)."));
 
   s.tables.push_back({"domain", false, true,
                       "The simulation box. Periodic axes wrap at its faces; particles leaving it "

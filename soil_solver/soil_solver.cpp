@@ -30,9 +30,9 @@ SoilSolver<D>::SoilSolver(const scene::Scene& s)
     : params_(SoilParams<D>::from_scene(s)),
       box_(sph::DomainBox<D>::from_scene(s, 2.0 * params_.h)),
       cubic_(sph::make_kernel<sph::CubicSpline<D>>(params_.h, s.run.dp,
-                                                   s.run.kernel_gradient == "lattice")),
+                                                   s.run.kernel_gradient != "plain")),
       wendland_(sph::make_kernel<sph::WendlandC2<D>>(params_.h, s.run.dp,
-                                                     s.run.kernel_gradient == "lattice")),
+                                                     s.run.kernel_gradient != "plain")),
       loads_(s.soil->loads) {
   using Vec = sph::Vec<D>;
   if (s.run.kernel == "cubic_spline") {
