@@ -35,9 +35,8 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
   const double* p = P.pressure.data();
   const double* c = P.sound_speed.data();
   const double* m = P.mass.data();
-  const double* cut = P.viscosity_cut.data();
-  const double* scale = P.gradient_scale.data();  // particle_gradient.h: 1 unless "particle"  //
-                                                  // artificial_viscosity.h: 0 without soil
+  const double* cut = P.viscosity_cut.data();     // artificial_viscosity.h: 0 without soil
+  const double* scale = P.gradient_scale.data();  // particle_gradient.h: 1 unless "particle"
   const double mu = prm.mu, eta2 = prm.eta2;
   const ArtificialViscosity av = prm.artificial;
   const Vec g = prm.gravity;
@@ -184,8 +183,8 @@ RateSummary compute_fluid_rates(const sph::NeighbourList<D>& neighbours, const K
   update_inverse_density_and_volume(P);
   if (params.particle_gradient) {
     ParticleGradient::compute(neighbours, kernel, P.n_free, P.volume, P.gradient_scale);
-  } else {
-    P.gradient_scale.assign(P.n_free, 1.0);
+  } else {  // every entry stays 1: only new particles need a value
+    P.gradient_scale.resize(P.n_free, 1.0);
   }
   if (params.morris_on())
     return dispatch_artificial<D, Kernel, true>(neighbours, kernel, params, P, level);

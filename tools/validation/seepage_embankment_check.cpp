@@ -9,25 +9,13 @@
 #include "tools/validation/rectangular_dam.h"
 #include "tools/validation/rectangular_dam_exact.h"
 #include "tools/validation/run_directory.h"
-#include "tools/validation/still_water.h"
+#include "tools/validation/seepage_run.h"
 
 namespace porosph::validation {
 
 namespace {
 
-struct Box {
-  double x0, y0, x1, y1;
-  bool contains(double x, double y) const { return x >= x0 && x <= x1 && y >= y0 && y <= y1; }
-};
-
-Box box_of(const nlohmann::json& entry, const std::string& what, const std::string& shape) {
-  if (entry.at("shape").get<std::string>() != shape)
-    throw std::runtime_error("seepage_embankment: " + what + " must be a " + shape);
-  const auto lo = entry.at("min").get<std::vector<double>>();
-  const auto hi = entry.at("max").get<std::vector<double>>();
-  if (lo.size() != 2) throw std::runtime_error("seepage_embankment: a 2D scene is needed");
-  return {lo[0], lo[1], hi[0], hi[1]};
-}
+using Box = SeepageBox;
 
 /// Marks the particles (xs, ys) connected to the floor y0: from every particle below y0 + link,
 /// through neighbours at most `link` apart (cell lists of width link). Drops that fell off the
@@ -93,26 +81,21 @@ double SeepageEmbankmentCheck::max_surface_error() const {
 SeepageEmbankmentCheck check_seepage_embankment(const std::string& run_dir, double window) {
   const auto run = read_run_json(run_dir);
   const auto& parameters = run.at("parameters");
-  const auto& material = parameters.at("soil").at("materials").at(0);
-  if (material.at("seepage").get<std::string>() != "darcy_conductivity")
-    throw std::runtime_error("seepage_embankment: the dam's seepage must be darcy_conductivity");
-  const Box dam = box_of(parameters.at("soil").at("blocks").at(0), "the first soil block", "box");
+  const SeepageScene scene = seepage_scene(parameters, "seepage_embankment", "dam");
+  const StillWater& water = scene.water;
+  const auto& w = parameters.at("water");
+  const Box dam = seepage_box(parameters.at("soil").at("blocks").at(0), "seepage_embankment",
+                              "the first soil block");
   const nlohmann::json* tank_entry = nullptr;
   for (const auto& wall : parameters.at("walls"))
     if (tank_entry == nullptr && wall.at("shape").get<std::string>() == "container")
       tank_entry = &wall;
   if (tank_entry == nullptr) throw std::runtime_error("seepage_embankment: no container wall");
-  const Box tank = box_of(*tank_entry, "the tank", "container");
-  const auto gravity = parameters.at("run").at("gravity").get<std::vector<double>>();
-  if (gravity.size() != 2 || gravity[0] != 0.0 || !(gravity[1] < 0.0))
-    throw std::runtime_error("seepage_embankment: gravity must point along -y");
-  const auto& w = parameters.at("water");
-  const StillWater water{w.at("rho0").get<double>(), w.at("sound_speed").get<double>(),
-                         w.at("gamma").get<double>(), -gravity[1]};
+  const Box tank = seepage_box(*tank_entry, "seepage_embankment", "the tank", "container");
 
   SeepageEmbankmentCheck out;
-  out.dp = parameters.at("run").at("dp").get<double>();
-  out.conductivity = material.at("hydraulic_conductivity").get<double>();
+  out.dp = scene.dp;
+  out.conductivity = scene.conductivity;
   out.length = dam.x1 - dam.x0;
   out.level_upstream = reservoir_level(w, 0.5 * (tank.x0 + dam.x0));
   out.level_downstream = reservoir_level(w, 0.5 * (dam.x1 + tank.x1));
@@ -139,29 +122,18 @@ SeepageEmbankmentCheck check_seepage_embankment(const std::string& run_dir, doub
   double h1 = 0, h2 = 0, h1_top = 0, h1_bottom = 0;
   for (const auto& snap : snapshots) {
     if (snap.time < out.window_start - 1e-12) continue;
-    const auto x = reader.read_f64(snap.index, "position");
-    const auto v = reader.read_f64(snap.index, "velocity");
-    const auto p = reader.read_f64(snap.index, "pressure");
-    const auto rho = reader.read_f64(snap.index, "density");
-    const auto m = reader.read_f64(snap.index, "mass");
-    const auto fixed = reader.read_u8(snap.index, "fixed");
-    double top_up = -1e9, top_down = -1e9;
-    for (std::size_t i = 0; i < x.rows; ++i) {
-      if (fixed.values[i]) continue;
-      const double xi = x.values[2 * i], yi = x.values[2 * i + 1];
-      if (upstream.contains(xi, yi)) top_up = std::max(top_up, yi);
-      if (downstream.contains(xi, yi)) top_down = std::max(top_down, yi);
-    }
+    const WaterSnapshot s = read_water_snapshot(reader, snap.index);
+    const double top_up = highest_free_y(s, upstream), top_down = highest_free_y(s, downstream);
     const double depth_up = top_up + 0.5 * dp - dam.y0;
     double sum_h1 = 0, sum_h2 = 0, sum_top = 0, sum_bottom = 0;
     std::size_t n1 = 0, n2 = 0, n_top = 0, n_bottom = 0;
     std::vector<double> top(n_st, -1e9), column_top(n_columns, -1e9), dam_x, dam_y;
     std::vector<double> flux(out.slab_x.size(), 0.0);
-    for (std::size_t i = 0; i < x.rows; ++i) {
-      if (fixed.values[i]) continue;
-      const double xi = x.values[2 * i], yi = x.values[2 * i + 1];
-      const double head = yi + water.pressure_head(p.values[i]);
-      const double vol = m.values[i] / rho.values[i];
+    for (std::size_t i = 0; i < s.rows(); ++i) {
+      if (!s.free(i)) continue;
+      const double xi = s.px(i), yi = s.py(i);
+      const double head = yi + water.pressure_head(s.p.values[i]);
+      const double vol = s.volume(i);
       if (upstream.contains(xi, yi) && yi < top_up - 0.5 * dp) {
         sum_h1 += head, ++n1;
         if (yi > dam.y0 + 0.75 * depth_up) sum_top += head, ++n_top;
@@ -171,7 +143,7 @@ SeepageEmbankmentCheck check_seepage_embankment(const std::string& run_dir, doub
       if (xi < dam.x0 || xi > dam.x1) continue;  // below: the water inside the dam
       for (std::size_t k = 0; k < out.slab_x.size(); ++k)
         if (std::abs(xi - dam.x0 - out.slab_x[k]) <= 0.5 * slab_width)
-          flux[k] += vol * v.values[2 * i];
+          flux[k] += vol * s.v.values[2 * i];
       dam_x.push_back(xi), dam_y.push_back(yi);
       for (std::size_t k = 0; k + 1 < n_st; ++k)
         if (std::abs(xi - station_x[k]) <= dp) volume[k] += vol / (2.0 * dp);

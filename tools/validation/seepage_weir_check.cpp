@@ -8,25 +8,13 @@
 #include "tools/validation/grid_series.h"
 #include "tools/validation/laplace_fv.h"
 #include "tools/validation/run_directory.h"
-#include "tools/validation/still_water.h"
+#include "tools/validation/seepage_run.h"
 
 namespace porosph::validation {
 
 namespace {
 
-struct Box {
-  double x0, y0, x1, y1;
-  bool contains(double x, double y) const { return x >= x0 && x <= x1 && y >= y0 && y <= y1; }
-};
-
-Box box_of(const nlohmann::json& entry, const std::string& what) {
-  if (entry.at("shape").get<std::string>() != "box")
-    throw std::runtime_error("seepage_weir: " + what + " must be a box");
-  const auto lo = entry.at("min").get<std::vector<double>>();
-  const auto hi = entry.at("max").get<std::vector<double>>();
-  if (lo.size() != 2) throw std::runtime_error("seepage_weir: a 2D scene is needed");
-  return {lo[0], lo[1], hi[0], hi[1]};
-}
+using Box = SeepageBox;
 
 /// The reference in units of the head difference: phi = (h - h2) / (h1 - h2) on the layer with
 /// phi = 1 on the upstream top, 0 downstream, no flow under the weir; for K = 1: the discharge
@@ -74,25 +62,19 @@ double SeepageWeirCheck::max_head_error() const {
 SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
   const auto run = read_run_json(run_dir);
   const auto& parameters = run.at("parameters");
-  const auto& material = parameters.at("soil").at("materials").at(0);
-  if (material.at("seepage").get<std::string>() != "darcy_conductivity")
-    throw std::runtime_error("seepage_weir: the layer's seepage must be darcy_conductivity");
-  const Box layer = box_of(parameters.at("soil").at("blocks").at(0), "the first soil block");
+  const SeepageScene scene = seepage_scene(parameters, "seepage_weir", "layer");
+  const StillWater& water = scene.water;
+  const Box layer =
+      seepage_box(parameters.at("soil").at("blocks").at(0), "seepage_weir", "the first soil block");
   const nlohmann::json* weir_entry = nullptr;
   for (const auto& wall : parameters.at("walls"))
     if (wall.value("label", "") == "weir") weir_entry = &wall;
   if (weir_entry == nullptr) throw std::runtime_error("seepage_weir: no wall labelled 'weir'");
-  const Box weir = box_of(*weir_entry, "the weir");
-  const auto gravity = parameters.at("run").at("gravity").get<std::vector<double>>();
-  if (gravity.size() != 2 || gravity[0] != 0.0 || !(gravity[1] < 0.0))
-    throw std::runtime_error("seepage_weir: gravity must point along -y");
-  const auto& w = parameters.at("water");
-  const StillWater water{w.at("rho0").get<double>(), w.at("sound_speed").get<double>(),
-                         w.at("gamma").get<double>(), -gravity[1]};
+  const Box weir = seepage_box(*weir_entry, "seepage_weir", "the weir");
 
   SeepageWeirCheck out;
-  out.dp = parameters.at("run").at("dp").get<double>();
-  out.conductivity = material.at("hydraulic_conductivity").get<double>();
+  out.dp = scene.dp;
+  out.conductivity = scene.conductivity;
   out.exit_stretch = 0.05 * (layer.x1 - weir.x1) / 0.5;  // 5 cm on the case's 0.5 m pool
   const double dp = out.dp, margin = 2.0 * dp;
   const double mid = 0.5 * (weir.x0 + weir.x1), depth = layer.y1 - layer.y0;
@@ -114,31 +96,20 @@ SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
   double h1 = 0, h2 = 0, exit_gradient = 0;
   for (const auto& snap : snapshots) {
     if (snap.time < out.window_start - 1e-12) continue;
-    const auto x = reader.read_f64(snap.index, "position");
-    const auto v = reader.read_f64(snap.index, "velocity");
-    const auto p = reader.read_f64(snap.index, "pressure");
-    const auto rho = reader.read_f64(snap.index, "density");
-    const auto m = reader.read_f64(snap.index, "mass");
-    const auto fixed = reader.read_u8(snap.index, "fixed");
-    double top_up = -1e9, top_down = -1e9;
-    for (std::size_t i = 0; i < x.rows; ++i) {
-      if (fixed.values[i]) continue;
-      const double xi = x.values[2 * i], yi = x.values[2 * i + 1];
-      if (upstream.contains(xi, yi)) top_up = std::max(top_up, yi);
-      if (downstream.contains(xi, yi)) top_down = std::max(top_down, yi);
-    }
+    const WaterSnapshot s = read_water_snapshot(reader, snap.index);
+    const double top_up = highest_free_y(s, upstream), top_down = highest_free_y(s, downstream);
     double sum_h1 = 0, sum_h2 = 0, flux = 0, exit_v = 0;
     std::size_t n1 = 0, n2 = 0, n_exit = 0;
     std::vector<double> ph(probe_points.size(), 0.0);
     std::vector<std::size_t> pn(probe_points.size(), 0);
-    for (std::size_t i = 0; i < x.rows; ++i) {
-      if (fixed.values[i]) continue;
-      const double xi = x.values[2 * i], yi = x.values[2 * i + 1];
-      const double head = yi + water.pressure_head(p.values[i]);
+    for (std::size_t i = 0; i < s.rows(); ++i) {
+      if (!s.free(i)) continue;
+      const double xi = s.px(i), yi = s.py(i);
+      const double head = yi + water.pressure_head(s.p.values[i]);
       if (upstream.contains(xi, yi) && yi < top_up - margin) sum_h1 += head, ++n1;
       if (downstream.contains(xi, yi) && yi < top_down - margin) sum_h2 += head, ++n2;
-      if (under.contains(xi, yi)) flux += m.values[i] / rho.values[i] * v.values[2 * i];
-      if (exit.contains(xi, yi)) exit_v += v.values[2 * i + 1], ++n_exit;
+      if (under.contains(xi, yi)) flux += s.volume(i) * s.v.values[2 * i];
+      if (exit.contains(xi, yi)) exit_v += s.v.values[2 * i + 1], ++n_exit;
       for (std::size_t k = 0; k < probe_points.size(); ++k) {
         if (std::abs(xi - probe_points[k].first) <= dp &&
             std::abs(yi - probe_points[k].second) <= dp)
