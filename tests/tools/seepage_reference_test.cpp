@@ -51,6 +51,26 @@ TEST(LaplaceFv, AFullHeightBarrierStopsTheFlowAndSplitsTheHead) {
   EXPECT_THROW(v::solve_laplace(p), std::invalid_argument);  // off the grid lines
 }
 
+TEST(LaplaceFv, ASolidBlockNarrowsTheSectionAndCarriesNoHead) {
+  // A solid over the whole length of the upper half: uniform flow through the lower half only.
+  v::LaplaceProblem p;
+  p.x1 = 2.0, p.cells_x = 8, p.cells_y = 4;
+  p.fixed_heads = {{v::Side::kLeft, 0.0, 1.0, 1.0}, {v::Side::kRight, 0.0, 1.0, 0.0}};
+  p.solids = {{0.0, 2.0, 0.5, 1.0}};
+  const auto s = v::solve_laplace(p);
+  EXPECT_NEAR(s.discharge_across_vertical(1.0, 0.0, 1.0), 0.5 * 1.0 / 2.0, 1e-12);
+  EXPECT_NEAR(s.head(0.5, 0.2), 0.75, 1e-12);
+  EXPECT_TRUE(std::isnan(s.cell_head(3, 3)));
+  EXPECT_NEAR(s.discharge_across_horizontal(0.5, 0.0, 2.0), 0.0, 1e-12);  // its faces: no flow
+  // A block in the middle makes the flow go round it: less discharge than without it.
+  p.solids = {{0.75, 1.25, 0.25, 1.0}};
+  const double around = v::solve_laplace(p).discharge_across_vertical(0.5, 0.0, 1.0);
+  EXPECT_GT(around, 0.0);
+  EXPECT_LT(around, 0.5);
+  p.solids = {{0.8, 1.25, 0.25, 1.0}};
+  EXPECT_THROW(v::solve_laplace(p), std::invalid_argument);  // off the grid lines
+}
+
 TEST(SheetPile, HarrsDischargeHasItsLimitsAndSymmetry) {
   EXPECT_NEAR(v::harr_discharge_factor(0.2, 0.1), 0.5, 1e-12);  // m = m' at s = T / 2
   EXPECT_TRUE(std::isinf(v::harr_discharge_factor(0.2, 0.0)));

@@ -198,6 +198,23 @@ LaplaceSolution solve_laplace(const LaplaceProblem& p) {
         }
     }
   }
+  std::vector<char> solid(nx * ny, 0);
+  for (const auto& b : p.solids) {
+    const int i0 = grid_line(b.x0, s.x0_, s.dx_, nx, "a solid block's left edge");
+    const int i1 = grid_line(b.x1, s.x0_, s.dx_, nx, "a solid block's right edge");
+    const int j0 = grid_line(b.y0, s.y0_, s.dy_, ny, "a solid block's bottom edge");
+    const int j1 = grid_line(b.y1, s.y0_, s.dy_, ny, "a solid block's top edge");
+    for (int j = j0; j < j1; ++j)
+      for (int i = i0; i < i1; ++i) {
+        solid[s.index(i, j)] = 1;
+        s.blocked_x_[j * (nx + 1) + i] = s.blocked_x_[j * (nx + 1) + i + 1] = 1;
+        s.blocked_y_[j * nx + i] = s.blocked_y_[(j + 1) * nx + i] = 1;
+        if (i == 0) s.left_[j] = kNoHead;
+        if (i == nx - 1) s.right_[j] = kNoHead;
+        if (j == 0) s.bottom_[i] = kNoHead;
+        if (j == ny - 1) s.top_[i] = kNoHead;
+      }
+  }
   // Assembly: per cell, the sum of the conductances to its open neighbours and fixed heads.
   const double cx = p.conductivity * s.dy_ / s.dx_, cy = p.conductivity * s.dx_ / s.dy_;
   std::vector<Eigen::Triplet<double>> triplets;
@@ -207,6 +224,10 @@ LaplaceSolution solve_laplace(const LaplaceProblem& p) {
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
       const int k = s.index(i, j);
+      if (solid[k]) {  // decoupled: every face is blocked; h = 0 here, NaN after the solve
+        triplets.emplace_back(k, k, 1.0);
+        continue;
+      }
       double diagonal = 0.0;
       auto neighbour = [&](bool open, int other, double c) {
         if (!open) return;
@@ -243,6 +264,8 @@ LaplaceSolution solve_laplace(const LaplaceProblem& p) {
     throw std::runtime_error("solve_laplace: factorisation failed");
   const Eigen::VectorXd h = solver.solve(rhs);
   s.head_.assign(h.data(), h.data() + h.size());
+  for (int k = 0; k < nx * ny; ++k)
+    if (solid[k]) s.head_[k] = kNoHead;
   return s;
 }
 

@@ -37,13 +37,21 @@ struct Barrier {
   double from = 0.0, to = 0.0;
 };
 
-/// The problem: rectangle, grid, conductivity, boundary segments, barriers.
+/// An impermeable solid of finite thickness inside the rectangle (a cut-off wall): the cells whose
+/// centres lie in [x0, x1] x [y0, y1] are removed, every face they share is no-flow. Its edges must
+/// be grid lines (1e-6 of a cell).
+struct SolidBlock {
+  double x0 = 0.0, x1 = 0.0, y0 = 0.0, y1 = 0.0;
+};
+
+/// The problem: rectangle, grid, conductivity, boundary segments, barriers, solid blocks.
 struct LaplaceProblem {
   double x0 = 0.0, x1 = 1.0, y0 = 0.0, y1 = 1.0;  ///< [m]
   int cells_x = 10, cells_y = 10;
   double conductivity = 1.0;  ///< K [m/s]
   std::vector<FixedHeadSegment> fixed_heads;
   std::vector<Barrier> barriers;
+  std::vector<SolidBlock> solids;
 };
 
 /// The solved head field and what is measured on it.
@@ -55,7 +63,7 @@ class LaplaceSolution {
   /// either side of one takes the value of its own side's cell (dh/dn = 0 there too); a point
   /// exactly on a barrier line counts as on its lower / left side.
   double head(double x, double y) const;
-  /// The head of cell (i, j), i along x.
+  /// The head of cell (i, j), i along x (NaN in a solid block).
   double cell_head(int i, int j) const { return head_[index(i, j)]; }
 
   /// Discharge per unit width [m^2/s] across the vertical line x = at, y in [from, to],
@@ -97,7 +105,8 @@ class LaplaceSolution {
 };
 
 /// Assembles and solves the problem. Throws std::invalid_argument for a barrier off the grid
-/// lines, a bad grid, or no fixed head at all (the head would be undetermined).
+/// lines, a solid block whose edges are not grid lines, a bad grid, or no fixed head at all (the
+/// head would be undetermined).
 LaplaceSolution solve_laplace(const LaplaceProblem& problem);
 
 }  // namespace porosph::validation
