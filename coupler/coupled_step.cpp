@@ -150,7 +150,8 @@ void CoupledStepLoop::absorb_state(const std::string& phase, coupling::StepState
   PhaseRecord& phase_record = record_.phases[phase];
   if (record_.steps == 0) phase_record.initial = d;
   phase_record.last = d;
-  if (!d.terms.empty()) phase_record.terms = d.terms;  // sent with the first state only
+  if (!d.terms.empty()) phase_record.terms = d.terms;         // sent with the first state only
+  phase_record.external.add(d, scene_.run.dimension, phase);  // the last advance's impulses
   phase_record.reported.wall_seconds += d.wall_seconds;
   phase_record.reported.physics_seconds += d.physics_seconds;
   phase_record.reported.communication_seconds += d.communication_seconds;
@@ -190,7 +191,16 @@ void CoupledStepLoop::append_timeseries_row(double dt) {
     row_.push_back(static_cast<double>(state.overlap_id.size()));
     row_.push_back(d.inflow_mass);
     row_.push_back(d.outflow_mass);
-    record_.phases[phase].note_mass_balance(d);
+    PhaseRecord& phase_record = record_.phases[phase];
+    phase_record.note_mass_balance(d);
+    // The momentum balance up to t: the books through this state, the interaction before this
+    // step's (momentum_balance.h).
+    const MomentumBalance balance = phase_momentum_balance(record_, phase);
+    for (double impulse : balance.external) row_.push_back(impulse);
+    ExternalImpulseRecord& books = phase_record.external;
+    const double residual = books.booked() ? balance.relative : 0.0;
+    books.relative_residual_max = std::max(books.relative_residual_max, residual);
+    row_.push_back(residual);
   }
   if (interaction_) {
     for (double impulse : record_.ledger.impulse_to_soil) row_.push_back(impulse);

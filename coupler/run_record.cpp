@@ -57,6 +57,9 @@ json diagnostics_json(const coupling::Diagnostics& d) {
   out["kinetic_energy"] = number(d.kinetic_energy);
   out["max_speed"] = number(d.max_speed);
   out["neighbours_per_particle"] = number(d.neighbours_per_particle);
+  // The momentum the external-impulse books balance, where it is not `momentum` (the soil's
+  // sum m^s v; docs/coupling.md).
+  if (!d.balance_momentum.empty()) out["balance_momentum"] = vector_json(d.balance_momentum);
   return out;
 }
 
@@ -105,7 +108,47 @@ json interaction_json(const InteractionRecord& r) {
           {"terms", r.terms}};
 }
 
+/// ledger.external_impulse.<phase> (the books by source) and ledger.momentum_balance.<phase> of
+/// every phase whose solver books its external impulses (docs/coupling.md).
+void add_external_ledgers(const RunRecord& r, json& ledger) {
+  json books = json::object(), balances = json::object();
+  const std::size_t dims = static_cast<std::size_t>(r.dimension);
+  for (const auto& [name, phase] : r.phases) {
+    if (!phase.external.booked()) continue;
+    json sources = json::object();
+    for (std::size_t s = 0; s < phase.external.sources.size(); ++s) {
+      const auto first = phase.external.impulse.begin() + static_cast<std::ptrdiff_t>(s * dims);
+      sources[phase.external.sources[s]] =
+          vector_json(std::vector<double>(first, first + static_cast<std::ptrdiff_t>(dims)));
+    }
+    books[name] = sources;
+    const MomentumBalance b = phase_momentum_balance(r, name);
+    balances[name] = {{"momentum_change", vector_json(b.change)},
+                      {"external_impulse", vector_json(b.external)},
+                      {"exchange", vector_json(b.exchange)},
+                      {"residual", vector_json(b.residual)},
+                      {"scale", number(b.scale)},
+                      {"relative_residual", number(b.relative)},
+                      {"relative_residual_max_over_outputs",
+                       number(std::max(b.relative, phase.external.relative_residual_max))}};
+  }
+  ledger["external_impulse"] = books;
+  ledger["momentum_balance"] = balances;
+}
+
 }  // namespace
+
+const std::vector<double>* exchange_impulse(const RunRecord& record, const std::string& phase) {
+  if (phase == "water") return &record.ledger.impulse_to_water;
+  if (phase == "soil") return &record.ledger.impulse_to_soil;
+  return nullptr;
+}
+
+MomentumBalance phase_momentum_balance(const RunRecord& record, const std::string& phase) {
+  const PhaseRecord& p = record.phases.at(phase);
+  return momentum_balance(p.external, p.initial, p.last, exchange_impulse(record, phase),
+                          record.dimension);
+}
 
 void ConservationLedger::add_step(double dt, const std::vector<double>& force_on_water,
                                   const std::vector<double>& force_on_soil,
@@ -215,6 +258,7 @@ void write_run_json(const std::string& path, const RunRecord& r) {
     out["ledger"]["implicit_share"] = {{"impulse_to_water", vector_json(implicit_water)},
                                        {"impulse_to_soil", vector_json(implicit_soil)}};
   }
+  add_external_ledgers(r, out["ledger"]);
   if (r.interaction.active) out["interaction"] = interaction_json(r.interaction);
   out["transport"] = {
       {"bytes_received", r.transport_bytes_received},

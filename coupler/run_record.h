@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "coupler/momentum_balance.h"
 #include "coupler/run_watch.h"
 #include "io/xdmf_writer.h"
 #include "proto/coupling_client.h"
@@ -89,6 +90,8 @@ struct PhaseRecord {
   void note_mass_balance(const coupling::Diagnostics& d) {
     mass_imbalance_max = std::max(mass_imbalance_max, mass_imbalance(d));
   }
+  /// The external-impulse books of the phase's solver (checkpointed; momentum_balance.h).
+  ExternalImpulseRecord external;
 };
 
 /// The phase's wall, physics and communication seconds over all the run's segments: the earlier
@@ -148,6 +151,12 @@ struct RunRecord {
   std::chrono::steady_clock::time_point segment_start_ = std::chrono::steady_clock::now();
   double wall_seconds_before_segment_ = 0;
 };
+
+/// The interaction's impulse to `phase` booked so far (the ledger's; null for another phase).
+const std::vector<double>* exchange_impulse(const RunRecord& record, const std::string& phase);
+
+/// The momentum balance of `phase` (momentum_balance.h) at its latest state.
+MomentumBalance phase_momentum_balance(const RunRecord& record, const std::string& phase);
 
 /// Writes run.json (atomically: temp file + rename; "coupler.heartbeat_utc" the time of writing).
 /// Throws std::runtime_error naming the file and the system's reason.

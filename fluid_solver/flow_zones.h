@@ -69,6 +69,8 @@ class FlowZones {
 
   /// Prepares the velocities of every zone for the step [time, time + dt] (no allocation).
   void begin_step(double time, double dt);
+  /// The velocity u(time + dt) zone z's particles have after the prepared step.
+  const Vec& end_velocity(int z) const { return step_[z].end; }
   /// Moves a particle of zone z over the prepared step (see above); returns 1 if it is now past
   /// the zone's downstream face, else 0.
   int move(int z, Vec& x, Vec& v, Vec& v_previous, double dt) const {

@@ -31,6 +31,7 @@ void FluidSolver<D>::write_checkpoint(io::CheckpointWriter& out) {
   out.set("damping_released", static_cast<std::int64_t>(damping_.released()));
   out.set("physics_seconds", physics_seconds_);
   out.set("dt_previous", dt_previous_);
+  book_.write(out);  // the next state reports the step before the checkpoint
 }
 
 template <int D>
@@ -60,6 +61,7 @@ void FluidSolver<D>::restore_checkpoint(const io::CheckpointReader& in) {
   dt_previous_ = in.get_f64("dt_previous");
   damping_.set_released(in.get_i64("damping_released") != 0);
   physics_seconds_ = in.get_f64("physics_seconds");
+  book_.read(in);
 }
 
 template void FluidSolver<2>::write_checkpoint(io::CheckpointWriter&);

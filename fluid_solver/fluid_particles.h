@@ -46,6 +46,9 @@ struct FluidParticles {
   std::vector<Vec> departure_gradient;
   /// The density diffusion's per-particle state (water particles only), filled with it.
   std::vector<DiffusionState> diffusion_state;
+  /// Per water particle: the part of `acceleration` from its wall neighbours (pressure and
+  /// viscous terms; fluid_rates.h), filled with it: the walls' impulse in the solver's books.
+  std::vector<Vec> wall_acceleration;
 
   std::size_t size() const { return position.size(); }
   std::size_t wall_count() const { return size() - n_free; }

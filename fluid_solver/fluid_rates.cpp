@@ -49,6 +49,7 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
       P.departure_gradient.assign(P.n_free, Vec::Zero());  // the plain bracket
     }
   }
+  P.wall_acceleration.resize(P.n_free);
   const Vec* departure_gradient = P.departure_gradient.data();
   const DiffusionState* diffusion_state = P.diffusion_state.data();
   double max_v2 = 0.0, max_a2 = 0.0;
@@ -91,29 +92,37 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
       }
     }
     // Wall neighbours (Adami 2012): own velocity in eq. 2, mirrored velocity in viscous terms.
+    // Their share is also summed apart: an external force in the solver's impulse books.
+    Vec acc_wall = Vec::Zero();
+    const auto add_wall_term = [&acc, &acc_wall](const Vec& term) {
+      acc += term;
+      acc_wall += term;
+    };
     for (auto it = nl.mid(a); it != nl.end(a); ++it) {
       const std::int32_t b = it->b;
       const double grad_factor = kernel.grad_factor(it->r);
       const Vec grad_w = (grad_factor * scale[a]) * it->x_ab;
       divergence += continuity_term<D>(volume[b], Vec(v_a - vel[b]), grad_w);
-      acc +=
-          pressure_acceleration<D>(m[b], pressure_sign * p_a, p[b], inv_rho_a, inv_rho[b], grad_w);
+      add_wall_term(
+          pressure_acceleration<D>(m[b], pressure_sign * p_a, p[b], inv_rho_a, inv_rho[b], grad_w));
       if constexpr (kNoSlip && (kMorris || kArtificial)) {
         const Vec v_ab = visc_vel[a] - wall_v[b];
         const double r2 = it->r * it->r;
         const double inv_r2_eta2 = 1.0 / (r2 + eta2);
         if constexpr (kMorris) {
           const double factor = regularised_gradient_factor(grad_factor * r2, inv_r2_eta2);
-          acc += morris_viscous_acceleration<D>(m[b], mu, mu, inv_rho_a, inv_rho[b], factor, v_ab);
+          add_wall_term(
+              morris_viscous_acceleration<D>(m[b], mu, mu, inv_rho_a, inv_rho[b], factor, v_ab));
         }
         if constexpr (kArtificial) {
-          acc += av.acceleration<D>(m[b], v_ab, it->x_ab, inv_r2_eta2, c_a, c[b], rho_a, rho[b],
-                                    grad_w, 1.0 - cut[a]);
+          add_wall_term(av.acceleration<D>(m[b], v_ab, it->x_ab, inv_r2_eta2, c_a, c[b], rho_a,
+                                           rho[b], grad_w, 1.0 - cut[a]));
         }
       }
     }
     acc += g;
     P.acceleration[a] = acc;
+    P.wall_acceleration[a] = acc_wall;
     if constexpr (kDiffusion) {
       P.density_rate[a] = rho_a * divergence + diffusion.coefficient() * diffusion_sum;
     } else {

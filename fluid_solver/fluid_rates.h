@@ -32,9 +32,9 @@ void update_water_pressure(const FluidParams<D>& params, FluidParticles<D>& P);
 template <int D>
 void update_inverse_density_and_volume(FluidParticles<D>& P);
 
-/// Fills P.inverse_density, P.volume (update_inverse_density_and_volume), P.acceleration and
-/// P.density_rate of the water particles. Walls must be up to date
-/// (update_wall_state, at the same `level`) and water pressures too (update_water_pressure).
+/// Fills P.inverse_density, P.volume (update_inverse_density_and_volume), P.acceleration, its
+/// walls' share P.wall_acceleration and P.density_rate of the water particles. Walls must be up to
+/// date (update_wall_state, at the same `level`) and water pressures too (update_water_pressure).
 /// `level`: the velocities the viscous terms act on (viscous_level.h).
 template <int D, class Kernel>
 RateSummary compute_fluid_rates(const sph::NeighbourList<D>& neighbours, const Kernel& kernel,

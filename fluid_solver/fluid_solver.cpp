@@ -213,6 +213,7 @@ void FluidSolver<D>::fill_state(coupling::StepState& out, const std::vector<doub
   out.dt_force = limits_.force;
   out.dt_limit = limits_.min();
   d.momentum.assign(t.momentum, t.momentum + D);
+  book_.flatten(d.external_impulse);  // what the last advance did (water_impulse_book.h)
   const sph::ParticleView<D> view{P.position.data(), P.velocity.data(), P.mass.data(),
                                   P.pressure.data(), P.n_free,          P.density.data()};
   for (const auto& o : observables_) d.observables[o.name] = evaluate(o, view);
@@ -261,6 +262,7 @@ void FluidSolver<D>::advance(double dt) {
     interaction_nonzero_ = false;
   }
   interaction_fresh_ = false;
+  book_.clear();
   if (!damping_.frozen(time_)) integrate(dt);  // else the water waits (damping_stage.h)
   time_ += dt;
   ++step_;
@@ -290,11 +292,13 @@ void FluidSolver<D>::integrate(double dt) {
   const bool dt_jump = std::abs(dt - dt_previous_) > 0.01 * dt_previous_;
   const bool euler = next_step_is_euler() || dt_jump;
   if (damping_.release(time_)) {  // end of the damping stage: every water velocity zeroed once
+    book_[kWaterDamping] -= momentum_of(P, 0, P.n_free);
     std::fill(P.velocity.begin(), P.velocity.begin() + n, sph::Vec<D>::Zero());
     std::fill(P.velocity_previous.begin(), P.velocity_previous.begin() + n, sph::Vec<D>::Zero());
   }
   const std::uint64_t born_before = born_count_, removed_before = removed_count_;
   zones_.begin_step(time_, dt);
+  book_water_integration(P, params_.gravity, dt, dt_previous_, euler, zones_, book_);
   std::int64_t past_zone = 0;  // zone particles past their downstream face
   const bool shifting = params_.shifting_on() && shifting_.concentration.size() == P.n_free;
 #pragma omp parallel for schedule(static) reduction(+ : past_zone)
@@ -311,10 +315,15 @@ void FluidSolver<D>::integrate(double dt) {
     }
     box_.wrap(P.position[a]);
   }
+  // The particles born are inserted at the end of the free range: their momentum is booked.
+  std::size_t free_before = P.n_free;
   if (past_zone > 0) born_count_ += zones_.renew(P, params_.volume, next_id_, inflow_mass_);
+  book_[kWaterInflow] += momentum_of(P, free_before, P.n_free);
   dt_previous_ = dt;
   remove_leaving_particles();
+  free_before = P.n_free;
   if (reservoirs_.count() > 0) born_count_ += reservoirs_.refill(P, time_, next_id_, inflow_mass_);
+  book_[kWaterReservoir] += momentum_of(P, free_before, P.n_free);
   // Births and removals shift the indices: a new search even where they leave the count as it was
   // (the list would otherwise survive as long as no particle moved more than half the skin).
   if (born_count_ != born_before || removed_count_ != removed_before) neighbours_.invalidate();
@@ -330,8 +339,14 @@ bool FluidSolver<D>::leaves(std::size_t a) const {
 
 template <int D>
 void FluidSolver<D>::remove_leaving_particles() {
+  const FluidParticles<D>& P = particles_;
   const auto leaving = [this](std::size_t a) { return leaves(a); };
-  removed_count_ += sph::remove_free_particles(particles_, leaving, keep_scratch_, outflow_mass_);
+  const auto removing = [this, &P](std::size_t a) {  // its momentum leaves with it
+    const bool outflow = box_.outside(P.position[a]) || zones_.in_outflow(P.position[a], time_);
+    book_[outflow ? kWaterOutflow : kWaterReservoir] -= P.mass[a] * P.velocity[a];
+  };
+  removed_count_ +=
+      sph::remove_free_particles(particles_, leaving, keep_scratch_, outflow_mass_, removing);
 }
 
 template <int D>

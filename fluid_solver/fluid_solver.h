@@ -17,6 +17,7 @@
 #include "fluid_solver/particle_shifting.h"
 #include "fluid_solver/pore_fields.h"
 #include "fluid_solver/reservoirs.h"
+#include "fluid_solver/water_impulse_book.h"
 #include "io/checkpoint_file.h"
 #include "io/snapshot_writer.h"
 #include "proto/coupling_client.h"
@@ -77,6 +78,10 @@ class FluidSolver {
   /// The physics terms this solver evaluates for its scene (run.json phases.water.terms): the
   /// same predicates that select the compiled pair loop (fluid_rates.cpp) and the optional stages.
   std::vector<std::string> active_terms() const;
+  /// The sources of the external impulses reported with each state (water_impulse_book.h).
+  std::vector<std::string> impulse_sources() const { return water_impulse_sources(); }
+  /// The external impulses of the last advance() (zero before the first), by source.
+  const WaterImpulseBook<D>& impulse_book() const { return book_; }
 
   /// Stores the whole state the integrator carries from step to step (every particle array, the
   /// counters, time, step, next id, damping release, pending wall removal; fluid_checkpoint.cpp).
@@ -148,6 +153,7 @@ class FluidSolver {
   bool viscosity_cut_nonzero_ = false;  ///< particles_.viscosity_cut may hold non-zero values
   double next_wall_removal_ = -1.0;     ///< earliest pending wall removal time (< 0: none)
   double physics_seconds_ = 0.0;
+  WaterImpulseBook<D> book_;  ///< of the last advance() (checkpointed)
 
   std::vector<std::int32_t> overlap_index_;
   std::vector<std::int32_t> inverse_scratch_;  ///< remap_overlap_index after a re-sort

@@ -55,6 +55,14 @@ struct Diagnostics {
   double neighbours_per_particle = 0;        ///< mean neighbour count of a free particle
   /// The physics terms the solver evaluates (first state only; empty afterwards).
   std::vector<std::string> terms;
+  /// Optional external-impulse books (docs/coupling.md, "The external-impulse ledger"): the
+  /// sources' names (first state only, like terms), and per source the impulse [N s] by which the
+  /// last advance changed balance_momentum (sources x D, row-major; empty: no books).
+  std::vector<std::string> impulse_sources;
+  std::vector<double> external_impulse;
+  /// The momentum the books balance where it is not `momentum` (the soil: sum m^s v, m^s the
+  /// effective mass of its equation of motion); empty: `momentum`.
+  std::vector<double> balance_momentum;
 };
 
 /// What a received state message left out (proto/state_delta.h). Solvers leave it at its

@@ -11,7 +11,9 @@
 // restore_checkpoint(const io::CheckpointReader&); a soil solver also
 // set_saturation(const std::vector<double>&); a solver with set_porosity(const
 // std::vector<double>&) (the water solver) gets StepCommand.porosity before each snapshot, and one
-// with set_drag_rate(const std::vector<double>&) StepCommand.interaction_rate every step.
+// with set_drag_rate(const std::vector<double>&) StepCommand.interaction_rate every step. A solver
+// with impulse_sources() reports those names with its first state (its fill_state() then fills
+// Diagnostics.external_impulse; docs/coupling.md, "The external-impulse ledger").
 // Checkpoints (docs/checkpoints.md): a command with write_checkpoint makes the loop advance, then
 // write OUT/checkpoint/<phase>_NNNN.h5 (the solver's state plus the overlap zone of that command)
 // and confirm it in the next state; Setup.restore_checkpoint makes it restore one before the first
@@ -75,6 +77,15 @@ template <class Solver, class = void>
 struct has_active_terms : std::false_type {};
 template <class Solver>
 struct has_active_terms<Solver, std::void_t<decltype(std::declval<const Solver&>().active_terms())>>
+    : std::true_type {};
+
+/// True for a solver with impulse_sources() (the names of its external-impulse books, reported
+/// with the first state; docs/coupling.md).
+template <class Solver, class = void>
+struct has_impulse_sources : std::false_type {};
+template <class Solver>
+struct has_impulse_sources<Solver,
+                           std::void_t<decltype(std::declval<const Solver&>().impulse_sources())>>
     : std::true_type {};
 
 /// The phase's snapshot file OUT/<file_name>: created afresh, or on resume reopened without the
@@ -186,6 +197,8 @@ int run_solver_loop_unguarded(CouplingClient& client, Solver& solver, io::Snapsh
   }
   std::uint32_t checkpoint_written = 0;  // confirmed with the next state
   if constexpr (has_active_terms<Solver>::value) state.diagnostics.terms = solver.active_terms();
+  if constexpr (has_impulse_sources<Solver>::value)
+    state.diagnostics.impulse_sources = solver.impulse_sources();
   for (;;) {
     if (rates_pending && !timed(state_is_finite)) return 1;
     timed([&] {
@@ -204,6 +217,7 @@ int run_solver_loop_unguarded(CouplingClient& client, Solver& solver, io::Snapsh
     checkpoint_written = 0;
     client.send_state(state);
     state.diagnostics.terms.clear();  // the first state carries them
+    state.diagnostics.impulse_sources.clear();
     // Overlaps with the coupler's interaction and the other solver's work.
     if (rates_pending && !timed(rates_are_finite)) return 1;
 

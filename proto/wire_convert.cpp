@@ -40,6 +40,10 @@ void to_wire(const coupling::Diagnostics& in, Diagnostics& out) {
   assign(out.mutable_momentum(), in.momentum);
   out.mutable_terms()->Clear();
   for (const std::string& term : in.terms) out.add_terms(term);
+  out.mutable_impulse_sources()->Clear();
+  for (const std::string& source : in.impulse_sources) out.add_impulse_sources(source);
+  assign(out.mutable_external_impulse(), in.external_impulse);
+  assign(out.mutable_balance_momentum(), in.balance_momentum);
   auto& observables = *out.mutable_observables();
   // Update in place (no node churn when the names stay the same), then drop stale names.
   for (const auto& [name, value] : in.observables) observables[name] = value;
@@ -65,6 +69,9 @@ void from_wire(const Diagnostics& in, coupling::Diagnostics& out) {
   out.neighbours_per_particle = in.neighbours_per_particle();
   assign(out.momentum, in.momentum());
   out.terms.assign(in.terms().begin(), in.terms().end());
+  out.impulse_sources.assign(in.impulse_sources().begin(), in.impulse_sources().end());
+  assign(out.external_impulse, in.external_impulse());
+  assign(out.balance_momentum, in.balance_momentum());
   for (const auto& [name, value] : in.observables()) {
     auto it = out.observables.find(name);
     if (it != out.observables.end()) {

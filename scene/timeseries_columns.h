@@ -1,7 +1,7 @@
 // The columns every timeseries.csv has before the scene's observables (DESIGN.md, run directory):
-// t, dt, per phase its totals, and for a scene with both phases the cumulative interaction
-// impulses and the soil-water pair count. One list for the coupler that writes them and for the
-// scene check that keeps observable names from shadowing them.
+// t, dt, per phase its totals and momentum balance, and for a scene with both phases the cumulative
+// interaction impulses and the soil-water pair count. One list for the coupler that writes them and
+// for the scene check that keeps observable names from shadowing them.
 #pragma once
 
 #include <string>
@@ -23,6 +23,12 @@ inline std::vector<std::string> builtin_timeseries_columns(const std::vector<std
     // Cumulative mass that entered (inflow zones) and left (outflow zones, the domain)
     // [kg/m^(3-D)]: <phase>_mass = its first row + inflow - outflow, to round-off, at every row.
     for (const char* total : {"_mass_inflow", "_mass_outflow"}) columns.push_back(phase + total);
+    // The external-impulse ledger (docs/coupling.md): the cumulative sum of the impulses the
+    // phase's solver booked [N s], and the relative residual of its momentum balance (0 when the
+    // solver books nothing).
+    for (int k = 0; k < dimension; ++k)
+      columns.push_back(phase + "_external_impulse_" + axis_name(k));
+    columns.push_back(phase + "_momentum_residual");
   }
   if (coupled) {
     // Cumulative interaction impulses [N s] up to t, and the soil-water pairs at t.

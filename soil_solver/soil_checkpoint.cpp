@@ -26,6 +26,7 @@ void SoilSolver<D>::write_checkpoint(io::CheckpointWriter& out) {
   out.set("interaction_nonzero", static_cast<std::int64_t>(interaction_nonzero_));
   out.set("saturation_set", static_cast<std::int64_t>(saturation_set_));
   out.set("next_wall_removal", next_wall_removal_);
+  book_.write(out);  // the next state reports the step before the checkpoint
 }
 
 template <int D>
@@ -48,6 +49,7 @@ void SoilSolver<D>::restore_checkpoint(const io::CheckpointReader& in) {
   interaction_fresh_ = false;  // a checkpoint is taken after advance()
   saturation_set_ = in.get_i64("saturation_set") != 0;
   next_wall_removal_ = in.get_f64("next_wall_removal");
+  book_.read(in);
 }
 
 template void SoilSolver<2>::write_checkpoint(io::CheckpointWriter&);

@@ -45,6 +45,14 @@ struct SoilParticles {
   /// 1 where R != 0 (some principal stress in tension; update_artificial_stress): pairs of two 0
   /// particles skip the artificial-stress term.
   std::vector<std::uint8_t> in_tension;
+  /// Per free particle: the part of `acceleration` from its fixed neighbours (walls, fixed soil;
+  /// soil_rates.h), filled with it: the walls' impulse in the solver's books.
+  std::vector<Vec> wall_acceleration;
+  /// Per free particle: sum_j (r_i - r_j) / 2 a_ij over its free neighbours j of the artificial
+  /// stress and viscosity terms a_ij (r = weight_ratio), filled with `acceleration`: what these
+  /// terms, not antisymmetric in the effective mass r m across a water surface, add to the soil's
+  /// momentum (soil_impulse_book.h).
+  std::vector<Vec> submergence_acceleration;
 
   std::size_t size() const { return position.size(); }
 

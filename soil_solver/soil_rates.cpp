@@ -23,6 +23,8 @@ SoilRateSummary acceleration_loop(const sph::NeighbourList<D>& nl, const Kernel&
   const double w_dp = kernel.w(prm.dp);
   const double as_exponent = prm.artificial_stress.exponent;
   const Vec g = prm.gravity;
+  P.wall_acceleration.resize(P.n_free);
+  P.submergence_acceleration.resize(P.n_free);
   double max_v2 = 0.0, max_a2 = 0.0;
 #pragma omp parallel for schedule(dynamic, 256) reduction(max : max_v2, max_a2)
   for (std::int64_t i = 0; i < n; ++i) {
@@ -32,27 +34,46 @@ SoilRateSummary acceleration_loop(const sph::NeighbourList<D>& nl, const Kernel&
     const Eigen::Matrix3d& sigma_i = P.stress[i];
     const std::uint8_t tension_i = kArtificialStress ? P.in_tension[i] : 0;
     Vec acc = Vec::Zero();
-    auto pair_terms = [&](const auto& pair, const Vec& v_j) {
+    Vec acc_wall = Vec::Zero();  // the fixed neighbours' share: external, in the impulse books
+    // The artificial stress and viscosity act per unit of the full mass m, the stress divergence
+    // per unit of the effective mass r m: between free neighbours of different submergence
+    // (r_i != r_j) the former are not antisymmetric in r m. Their share (r_i - r_j) / 2, whose
+    // r m-weighted sum is all they add to the soil's momentum, is summed apart for the impulse
+    // books (soil_impulse_book.h).
+    const double r_i = P.weight_ratio[i];
+    Vec acc_mixed = Vec::Zero();
+    auto pair_terms = [&](const auto& pair, const Vec& v_j, bool fixed_j) {
+      const auto add = [&](const Vec& term) {
+        acc += term;
+        if (fixed_j) acc_wall += term;
+      };
+      const double half_dr = fixed_j ? 0.0 : 0.5 * (r_i - P.weight_ratio[pair.b]);
+      const auto add_per_full_mass = [&](const Vec& term) {
+        add(term);
+        if (half_dr != 0.0) acc_mixed += half_dr * term;
+      };
       const std::int32_t j = pair.b;
       const Vec grad_w = kernel.grad_factor(pair.r) * pair.x_ab;
-      acc += stress_divergence_acceleration<D>(P.mass[j], sigma_i, P.stress[j], rho_weight_i,
-                                               P.density[j], grad_w);
+      add(stress_divergence_acceleration<D>(P.mass[j], sigma_i, P.stress[j], rho_weight_i,
+                                            P.density[j], grad_w));
       if constexpr (kArtificialStress) {
         if (tension_i | P.in_tension[j]) {  // else R_i + R_j = 0: no term (and no pow)
           const double f_n = artificial_stress_factor(kernel.w(pair.r), w_dp, as_exponent);
-          acc += artificial_stress_acceleration<D>(P.mass[j], P.artificial_stress[i],
-                                                   P.artificial_stress[j], f_n, grad_w);
+          add_per_full_mass(artificial_stress_acceleration<D>(P.mass[j], P.artificial_stress[i],
+                                                              P.artificial_stress[j], f_n, grad_w));
         }
       }
       if constexpr (kViscosity) {
-        acc += av.acceleration<D>(P.mass[j], Vec(v_i - v_j), pair.x_ab, pair.r, c, c, rho_i,
-                                  P.density[j], grad_w);
+        add_per_full_mass(av.acceleration<D>(P.mass[j], Vec(v_i - v_j), pair.x_ab, pair.r, c, c,
+                                             rho_i, P.density[j], grad_w));
       }
     };
-    for (auto it = nl.begin(i); it != nl.mid(i); ++it) pair_terms(*it, P.velocity[it->b]);
-    for (auto it = nl.mid(i); it != nl.end(i); ++it) pair_terms(*it, P.wall_velocity[it->b]);
+    for (auto it = nl.begin(i); it != nl.mid(i); ++it) pair_terms(*it, P.velocity[it->b], false);
+    for (auto it = nl.mid(i); it != nl.end(i); ++it) pair_terms(*it, P.wall_velocity[it->b], true);
     acc += g;
     P.acceleration[i] = acc;
+    P.wall_acceleration[i] = acc_wall;
+    P.submergence_acceleration[i] = acc_mixed;
     max_v2 = std::max(max_v2, v_i.squaredNorm());
     max_a2 = std::max(max_a2, (acc + P.interaction[i]).squaredNorm());
   }

@@ -29,8 +29,9 @@ struct SoilRateSummary {
 template <int D>
 void update_artificial_stress(const SoilParams<D>& params, SoilParticles<D>& P);
 
-/// Pass 1: fills acceleration of the free soil particles. Fixed particles must be up to date
-/// (update_soil_wall_state, then update_artificial_stress when on).
+/// Pass 1: fills acceleration of the free soil particles, its fixed neighbours' share
+/// wall_acceleration and submergence_acceleration (soil_particles.h). Fixed particles must be up to
+/// date (update_soil_wall_state, then update_artificial_stress when on).
 template <int D, class Kernel>
 SoilRateSummary compute_soil_rates(const sph::NeighbourList<D>& neighbours, const Kernel& kernel,
                                    const SoilParams<D>& params, SoilParticles<D>& P);

@@ -187,7 +187,10 @@ void SoilSolver<D>::compute_rates_with(const Kernel& kernel) {
   if (params_.any_artificial_stress()) update_artificial_stress(params_, particles_);
   const SoilRateSummary r = compute_soil_rates(neighbours_, kernel, params_, particles_);
   const double max_acceleration =
-      std::max(r.max_total_acceleration, loads_.apply(time_, particles_));
+      std::max(r.max_total_acceleration, loads_.apply(time_, particles_, &load_force_));
+  // The weight ratios these rates used (the books' inertia_switch, soil_impulse_book.h).
+  rates_weight_ratio_.assign(particles_.weight_ratio.begin(),
+                             particles_.weight_ratio.begin() + particles_.n_free);
   limits_ = sph::time_step_limits(params_.h, params_.sound_speed, r.max_speed, 0.0,
                                   max_acceleration, params_.cfl, 0.125, params_.c_a);
 }
@@ -218,6 +221,9 @@ void SoilSolver<D>::fill_state(coupling::StepState& out, const std::vector<doubl
   out.diagnostics.removed_count = removed_count_;
   out.diagnostics.outflow_mass = outflow_mass_;
   out.diagnostics.neighbours_per_particle = neighbours_per_particle_;
+  book_.flatten(out.diagnostics.external_impulse);  // of the last advance (soil_impulse_book.h)
+  const sph::Vec<D> pi = effective_momentum(P, 0, P.n_free);
+  out.diagnostics.balance_momentum.assign(pi.data(), pi.data() + D);
   sph::ParticleView<D> view{P.position.data(), P.velocity.data(), P.mass.data(), nullptr, P.n_free};
   view.density = P.density.data();
   view.porosity = P.porosity.data();
@@ -234,9 +240,15 @@ void SoilSolver<D>::add_interaction(const std::vector<double>& acceleration) {
                                 std::to_string(acceleration.size()));
   }
   std::fill(particles_.interaction.begin(), particles_.interaction.end(), sph::Vec<D>::Zero());
+  fixed_interaction_.clear();
   for (std::size_t i = 0; i < overlap_index_.size(); ++i) {
     const std::size_t index = static_cast<std::size_t>(overlap_index_[i]);
-    if (index >= particles_.n_free) continue;  // fixed soil exchanges drag but never moves
+    if (index >= particles_.n_free) {  // fixed soil exchanges drag but never moves: only booked
+      sph::Vec<D> a;
+      for (int k = 0; k < D; ++k) a[k] = acceleration[i * D + k];
+      fixed_interaction_.emplace_back(overlap_index_[i], a);
+      continue;
+    }
     for (int k = 0; k < D; ++k) particles_.interaction[index][k] = acceleration[i * D + k];
   }
   interaction_fresh_ = true;
@@ -269,19 +281,27 @@ void SoilSolver<D>::advance(double dt) {
   SoilParticles<D>& P = particles_;
   if (!interaction_fresh_ && interaction_nonzero_) {
     std::fill(P.interaction.begin(), P.interaction.end(), sph::Vec<D>::Zero());
+    fixed_interaction_.clear();
     interaction_nonzero_ = false;
   }
   interaction_fresh_ = false;
   const bool damping = time_ < params_.damping_duration;
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
   const double inv_h2 = 1.0 / (params_.h * params_.h);
+  // Dynamic relaxation: a -= D v, D = coefficient sqrt(E / (rho h^2)) during the stage.
+  const auto damping_rate = [&](std::int64_t i) {
+    if (!damping) return 0.0;
+    const auto& m = params_.materials[P.material[i]];
+    return params_.damping_coefficient * std::sqrt(m.young * inv_h2 / P.density[i]);
+  };
+  book_.clear();
+  book_soil_kick(P, rates_weight_ratio_, params_.gravity, dt, damping_rate, book_);
+  book_fixed_soil(P, fixed_interaction_, dt, params_.volume, book_);
+  book_[kSoilLoads] += dt * load_force_;
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {  // kick
     sph::Vec<D> a = P.acceleration[i] + P.interaction[i];
-    if (damping) {  // dynamic relaxation: a -= D v, D = coefficient sqrt(E / (rho h^2))
-      const auto& m = params_.materials[P.material[i]];
-      a -= params_.damping_coefficient * std::sqrt(m.young * inv_h2 / P.density[i]) * P.velocity[i];
-    }
+    if (damping) a -= damping_rate(i) * P.velocity[i];
     // The interaction already holds the coupler's pairwise implicit drag over dt: explicit here.
     P.velocity[i] += dt * a;
   }
@@ -305,6 +325,7 @@ void SoilSolver<D>::advance(double dt) {
   time_ += dt;
   ++step_;
   if (params_.damping_duration > 0.0 && !damping_released_ && time_ >= params_.damping_duration) {
+    book_[kSoilDamping] -= effective_momentum(P, 0, P.n_free);
     for (std::int64_t i = 0; i < n; ++i) P.velocity[i].setZero();  // end of the damping stage
     damping_released_ = true;
   }
@@ -329,8 +350,13 @@ void SoilSolver<D>::update_stresses(double dt) {
 
 template <int D>
 void SoilSolver<D>::remove_particles_outside() {
+  const SoilParticles<D>& P = particles_;
   const auto outside = [this](std::size_t i) { return box_.outside(particles_.position[i]); };
-  removed_count_ += sph::remove_free_particles(particles_, outside, keep_scratch_, outflow_mass_);
+  const auto removing = [this, &P](std::size_t i) {  // its momentum leaves with it
+    book_[kSoilOutflow] -= (P.weight_ratio[i] * P.mass[i]) * P.velocity[i];
+  };
+  removed_count_ +=
+      sph::remove_free_particles(particles_, outside, keep_scratch_, outflow_mass_, removing);
 }
 
 template <int D>

@@ -17,12 +17,14 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/checkpoint_file.h"
 #include "io/snapshot_writer.h"
 #include "proto/coupling_client.h"
 #include "scene/scene.h"
+#include "soil_solver/soil_impulse_book.h"
 #include "soil_solver/soil_params.h"
 #include "soil_solver/soil_particles.h"
 #include "soil_solver/surface_loads.h"
@@ -73,6 +75,10 @@ class SoilSolver {
   /// The physics terms this solver evaluates for its scene (run.json phases.soil.terms): the same
   /// predicates that select the compiled pair loops (soil_rates.cpp) and the optional stages.
   std::vector<std::string> active_terms() const;
+  /// The sources of the external impulses reported with each state (soil_impulse_book.h).
+  std::vector<std::string> impulse_sources() const { return soil_impulse_sources(); }
+  /// The external impulses of the last advance() (zero before the first), by source.
+  const SoilImpulseBook<D>& impulse_book() const { return book_; }
 
   /// Stores the whole state the integrator carries from step to step (every particle array incl.
   /// stress, porosity, plastic strain, displacement, saturation and wet flags; the counters, time,
@@ -124,6 +130,11 @@ class SoilSolver {
   bool interaction_nonzero_ = false;
   bool saturation_set_ = false;  ///< some particle has a non-zero saturation
   double next_wall_removal_ = -1.0;
+  SoilImpulseBook<D> book_;                       ///< of the last advance() (checkpointed)
+  sph::Vec<D> load_force_ = sph::Vec<D>::Zero();  ///< the surface loads' total, latest rates
+  std::vector<double> rates_weight_ratio_;  ///< weight_ratio of the free soil at the latest rates
+  /// The interaction the coupler sent to fixed soil (index, acceleration): never applied, booked.
+  std::vector<std::pair<std::int32_t, sph::Vec<D>>> fixed_interaction_;
 
   std::vector<std::int32_t> overlap_index_;
   std::vector<std::int32_t> inverse_scratch_;  ///< remap_overlap_index after a re-sort

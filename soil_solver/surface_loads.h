@@ -65,8 +65,10 @@ class SurfaceLoads {
   }
 
   /// Adds the loads' accelerations at `time` to P.acceleration; returns the largest |a +
-  /// interaction| of a loaded particle (for the eq. 21 limit), 0 when no load acts.
-  double apply(double time, SoilParticles<D>& P) const {
+  /// interaction| of a loaded particle (for the eq. 21 limit), 0 when no load acts. `force`: the
+  /// loads' total force sum f(t) F / N (the impulse books), when given.
+  double apply(double time, SoilParticles<D>& P, Vec* force = nullptr) const {
+    if (force != nullptr) force->setZero();
     if (loads_.empty()) return 0.0;
     double max_a2 = 0.0;
     for (std::size_t i = 0; i < P.n_free; ++i) {
@@ -76,6 +78,7 @@ class SurfaceLoads {
       if (factor == 0.0) continue;
       const double effective_mass = P.mass[i] * P.weight_ratio[i];
       P.acceleration[i] += (factor / effective_mass) * force_per_particle_[k];
+      if (force != nullptr) *force += factor * force_per_particle_[k];
       max_a2 = std::max(max_a2, (P.acceleration[i] + P.interaction[i]).squaredNorm());
     }
     return std::sqrt(max_a2);

@@ -12,11 +12,13 @@
 namespace porosph::sph {
 
 /// Removes the free particles i in [0, n_free) with leaves(i), adding their mass to
-/// `removed_mass`. Returns how many were removed. A parallel count first: nothing is touched in
-/// the common step where no particle leaves.
-template <class Particles, class Leaves>
+/// `removed_mass` and calling removing(i) for each before it goes (to book what it carried away,
+/// e.g. its momentum). Returns how many were removed. A parallel count first: nothing is touched
+/// in the common step where no particle leaves.
+template <class Particles, class Leaves, class Removing>
 std::size_t remove_free_particles(Particles& P, const Leaves& leaves,
-                                  std::vector<std::uint8_t>& keep, double& removed_mass) {
+                                  std::vector<std::uint8_t>& keep, double& removed_mass,
+                                  const Removing& removing) {
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
   std::int64_t leaving = 0;
 #pragma omp parallel for schedule(static) reduction(+ : leaving)
@@ -27,8 +29,16 @@ std::size_t remove_free_particles(Particles& P, const Leaves& leaves,
     if (!leaves(static_cast<std::size_t>(i))) continue;
     keep[i] = 0;
     removed_mass += P.mass[i];
+    removing(static_cast<std::size_t>(i));
   }
   return P.compact(keep);
+}
+
+/// remove_free_particles() without a per-particle hook.
+template <class Particles, class Leaves>
+std::size_t remove_free_particles(Particles& P, const Leaves& leaves,
+                                  std::vector<std::uint8_t>& keep, double& removed_mass) {
+  return remove_free_particles(P, leaves, keep, removed_mass, [](std::size_t) {});
 }
 
 /// Removes the fixed particles whose remove_at time (>= 0) is <= `time`. Returns the earliest

@@ -228,6 +228,20 @@ TEST(CheckpointResume, KilledCoupledRunResumesSoilStateAndLedger) {
   }
   expect_close(record.at("ledger").at("impulse_magnitude_sum").get<double>(),
                expected.at("ledger").at("impulse_magnitude_sum").get<double>(), "magnitude sum");
+  // The external-impulse books: the checkpoint holds their sums, the restored solvers the step
+  // before it (docs/coupling.md).
+  for (const char* phase : {"water", "soil"}) {
+    const auto& books = record.at("ledger").at("external_impulse").at(phase);
+    for (const auto& [source, impulse] : books.items()) {
+      for (int k = 0; k < 2; ++k) {
+        expect_close(impulse.at(k).get<double>(),
+                     expected.at("ledger").at("external_impulse").at(phase).at(source).at(k),
+                     std::string(phase) + " " + source);
+      }
+    }
+    const auto& balance = record.at("ledger").at("momentum_balance").at(phase);
+    EXPECT_LT(balance.at("relative_residual_max_over_outputs").get<double>(), 1e-10) << phase;
+  }
   for (const char* phase : {"water", "soil"}) {
     const auto& mass = record.at("phases").at(phase).at("mass");
     for (const char* key : {"initial", "final", "inflow", "outflow"}) {

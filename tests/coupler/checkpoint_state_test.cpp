@@ -64,6 +64,10 @@ RunRecord sample_record() {
   water.last.inflow_mass = 0.125;
   water.snapshots = {{0, 0.0, 100}, {1, 0.1000000000000001, 101}};
   water.reported = {12.5, 9.75, 2.25};  // wall, physics, communication
+  water.initial.balance_momentum = {1.0 / 7.0, -0.0};
+  water.external.sources = {"gravity", "walls"};
+  water.external.impulse = {0.0, -1.0 / 3.0, 1e-300, std::sqrt(3.0)};
+  water.external.relative_residual_max = 2.5e-15;
   r.resumes = 2;
   return r;
 }
@@ -113,6 +117,12 @@ TEST(CouplerCheckpointState, RoundTripsBitForBit) {
   EXPECT_EQ(water.reported.wall_seconds, 12.5);
   EXPECT_EQ(water.reported.physics_seconds, 9.75);
   EXPECT_EQ(water.reported.communication_seconds, 2.25);
+  const PhaseRecord& water_in = in.phases.at("water");
+  EXPECT_EQ(water.initial.balance_momentum, water_in.initial.balance_momentum);
+  EXPECT_EQ(water.external.sources, water_in.external.sources);
+  EXPECT_EQ(water.external.impulse, water_in.external.impulse);
+  EXPECT_EQ(water.external.relative_residual_max, 2.5e-15);
+  EXPECT_TRUE(water.external.booked());
   EXPECT_THROW(restore_coupler_state("{}", "test", out, loop_out), std::runtime_error);
 }
 
@@ -134,6 +144,23 @@ TEST(CouplerCheckpointState, OlderStateWithoutRowsTakesTheSnapshotCounters) {
   EXPECT_EQ(restored.row_index, 6u);
   EXPECT_EQ(restored.next_row_time, 0.6);
   EXPECT_EQ(restored.last_row_time, 0.5);
+}
+
+// A checkpoint written before the external-impulse books: the sums of the earlier segment are
+// unknown, so the resumed run reports no momentum balance for the phase (rather than a wrong one).
+TEST(CouplerCheckpointState, OlderStateWithoutBooksReportsNoBalance) {
+  auto state = nlohmann::json::parse(coupler_state_json(sample_record(), LoopState{}));
+  state["record"]["phases"]["water"].erase("external_impulse");
+  RunRecord out;
+  LoopState restored;
+  restore_coupler_state(state.dump(), "test", out, restored);
+  ExternalImpulseRecord& books = out.phases.at("water").external;
+  EXPECT_FALSE(books.booked());
+  coupling::Diagnostics d;
+  d.impulse_sources = {"gravity"};
+  d.external_impulse = {0.0, -1.0};
+  books.add(d, 2, "water");  // the resumed solver's books change nothing
+  EXPECT_FALSE(books.booked());
 }
 
 // A resumed run's run.json counts the solver time of all its segments: the reports summed up to

@@ -67,6 +67,8 @@ coupling::StepState overlap_state(double shift) {
   s.region_min = {0, 0};
   s.region_max = {1, 1};
   s.diagnostics.momentum = {1, 2};
+  s.diagnostics.external_impulse.assign(14, shift);  // 7 sources x 2: no allocation either
+  s.diagnostics.balance_momentum = {shift, 2};
   return s;
 }
 

@@ -37,6 +37,9 @@ coupling::StepState sample_state() {
   s.diagnostics.physics_seconds = 0.01;
   s.diagnostics.wall_seconds = 0.0125;
   s.diagnostics.communication_seconds = 0.002;
+  s.diagnostics.impulse_sources = {"gravity", "walls"};
+  s.diagnostics.external_impulse = {0.0, -1e-3, 2.5e-4, 1e-300};
+  s.diagnostics.balance_momentum = {0.125, -0.375};
   s.checkpoint_written = 3;
   return s;
 }
@@ -81,7 +84,23 @@ TEST(WireConvert, StepStateSurvivesSerialisation) {
   EXPECT_EQ(out.diagnostics.physics_seconds, 0.01);
   EXPECT_EQ(out.diagnostics.wall_seconds, 0.0125);
   EXPECT_EQ(out.diagnostics.communication_seconds, 0.002);
+  EXPECT_EQ(out.diagnostics.impulse_sources, in.diagnostics.impulse_sources);
+  EXPECT_EQ(out.diagnostics.external_impulse, in.diagnostics.external_impulse);
+  EXPECT_EQ(out.diagnostics.balance_momentum, in.diagnostics.balance_momentum);
   EXPECT_EQ(out.checkpoint_written, in.checkpoint_written);
+}
+
+// A solver that books no external impulses (a foreign one, or an older built-in) leaves the
+// fields empty, and they arrive empty.
+TEST(WireConvert, ExternalImpulseBooksAreOptional) {
+  coupling::StepState in = sample_state();
+  in.diagnostics.impulse_sources.clear();
+  in.diagnostics.external_impulse.clear();
+  in.diagnostics.balance_momentum.clear();
+  const coupling::StepState out = through_the_wire(in);
+  EXPECT_TRUE(out.diagnostics.impulse_sources.empty());
+  EXPECT_TRUE(out.diagnostics.external_impulse.empty());
+  EXPECT_TRUE(out.diagnostics.balance_momentum.empty());
 }
 
 TEST(WireConvert, StepCommandSetupAndTimingSurviveSerialisation) {

@@ -1,0 +1,103 @@
+// The water solver's external-impulse book (docs/coupling.md, "The external-impulse ledger"): by
+// how much each source changed the momentum P = sum_a m_a v_a of the free water (inflow-zone
+// particles included) over one step, exactly as the integrator applies it. With a_own = g + a_wall
+// + a_pair the particle's own acceleration (fluid_rates.h; a_wall its wall neighbours' share,
+// a_pair the water pairs') and a_int the coupler's interaction, the modified Verlet step of a free
+// particle (sph/integrator.h, verlet_step_coupled; q^n the stored previous velocity) is
+//   v^{n+1} - v^n = [q^n - v^n + dt_previous a_own] + dt (g + a_wall + a_pair) + dt a_int
+// (Verlet), the bracket absent on Euler steps. Per step the book holds
+//   gravity       dt sum m g                      over the integrated (non-zone) particles
+//   walls         dt sum m a_wall                 over the integrated particles
+//   verlet_chain  sum m (q^n - v^n + dt_previous a_own)   Verlet steps, integrated particles: the
+//                 momentum of the other time level minus the reported one plus the earlier span's
+//                 share of the own forces. Not an external impulse: the two Verlet chains differ
+//                 by it. It vanishes for constant forces (v^n = q^n + dt_previous a) and sums over
+//                 a run to the difference between the chains' momenta, which Euler steps reset.
+//   inflow        sum m (u^{n+1} - v^n) - dt sum m (a_own - g - a_wall + a_int)   over the zone
+//                 particles, which move at the prescribed u (flow_zones.h) instead of their
+//                 equation of motion: what the zone's "piston" adds beyond the forces of the water
+//                 and the interaction on them (their gravity and walls are simply not applied);
+//                 plus sum m v of the particles the zones create
+//   outflow       -sum m v of the particles removed in outflow zones or leaving the domain
+//   reservoir     sum m v of the particles a reservoir adds, minus those it removes
+//   damping       -sum m v of the velocities zeroed at the end of the damping stage
+// so that P^{n+1} - P^n = sum of the book + dt sum m a_int (the coupler's ledger) + dt sum m
+// a_pair, the last zero to round-off where the pair forces are antisymmetric (the symmetric
+// pressure form; not the difference form that particle shifting uses, pressure_force.h).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "fluid_solver/flow_zones.h"
+#include "fluid_solver/fluid_particles.h"
+#include "sph/impulse_book.h"
+
+namespace porosph::fluid {
+
+/// The water's sources, in the order of water_impulse_sources().
+enum WaterImpulse : std::size_t {
+  kWaterGravity,
+  kWaterWalls,
+  kWaterInflow,
+  kWaterOutflow,
+  kWaterReservoir,
+  kWaterDamping,
+  kWaterVerletChain,
+  kWaterImpulseCount
+};
+
+inline std::vector<std::string> water_impulse_sources() {
+  return {"gravity", "walls", "inflow", "outflow", "reservoir", "damping", "verlet_chain"};
+}
+
+template <int D>
+using WaterImpulseBook = sph::ImpulseBook<D, kWaterImpulseCount>;
+
+/// sum m v over the particles [begin, end) of P.
+template <int D>
+sph::Vec<D> momentum_of(const FluidParticles<D>& P, std::size_t begin, std::size_t end) {
+  sph::Vec<D> p = sph::Vec<D>::Zero();
+  for (std::size_t a = begin; a < end; ++a) p += P.mass[a] * P.velocity[a];
+  return p;
+}
+
+/// Adds to `book` the gravity, walls, verlet_chain and zone-particle inflow terms (above) of the
+/// step of length dt that is about to integrate P's free particles: call with the state before
+/// it, after zones.begin_step(time, dt). `euler`: an Euler step of the modified Verlet scheme.
+template <int D>
+void book_water_integration(const FluidParticles<D>& P, const sph::Vec<D>& g, double dt,
+                            double dt_previous, bool euler, const FlowZones<D>& zones,
+                            WaterImpulseBook<D>& book) {
+  using Vec = sph::Vec<D>;
+  const std::int64_t n = static_cast<std::int64_t>(P.n_free);
+  double mass = 0.0;                    // of the integrated particles
+  double walls[D] = {}, chain[D] = {};  // sum m a_wall; sum m (q - v + dt_previous a_own)
+  double zone[D] = {};                  // zone particles: sum m (u_end - v) - dt m (...)
+#pragma omp parallel for schedule(static) reduction(+ : mass, walls[:D], chain[:D], zone[:D])
+  for (std::int64_t a = 0; a < n; ++a) {
+    const double m = P.mass[a];
+    const Vec& a_own = P.acceleration[a];
+    if (P.zone[a] >= 0) {
+      const Vec driven = (zones.end_velocity(P.zone[a]) - P.velocity[a]) -
+                         dt * (a_own - g - P.wall_acceleration[a] + P.interaction[a]);
+      for (int k = 0; k < D; ++k) zone[k] += m * driven[k];
+      continue;
+    }
+    mass += m;
+    for (int k = 0; k < D; ++k) walls[k] += m * P.wall_acceleration[a][k];
+    if (euler) continue;
+    const Vec switched = P.velocity_previous[a] - P.velocity[a] + dt_previous * a_own;
+    for (int k = 0; k < D; ++k) chain[k] += m * switched[k];
+  }
+  book[kWaterGravity] += (dt * mass) * g;
+  for (int k = 0; k < D; ++k) {
+    book[kWaterWalls][k] += dt * walls[k];
+    book[kWaterVerletChain][k] += chain[k];
+    book[kWaterInflow][k] += zone[k];
+  }
+}
+
+}  // namespace porosph::fluid
