@@ -2,6 +2,7 @@
 // solver's context: no globals).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -35,11 +36,26 @@ struct FluidParams {
   bool hydrostatic_initial = true;
   /// run.kernel_gradient = "particle": per-particle gradient renormalisation (particle_gradient.h).
   bool particle_gradient = false;
+  /// water.pressure_gradient_in_soil = "hydrostatic_difference" (hydrostatic_difference.h).
+  bool hydrostatic_difference_in_soil = false;
+  /// r_av of the drag share s_a = min(1, lambda_a / r_av) (artificial_viscosity.h), which the
+  /// drag-limited artificial viscosity and the hydrostatic difference form use; 0 with alpha = 0
+  /// (then s_a = 1 wherever lambda_a > 0).
+  double drag_share_rate = 0.0;
 
   bool morris_on() const { return mu > 0.0; }
   bool artificial_on() const { return artificial.alpha > 0.0 || artificial.beta > 0.0; }
   bool diffusion_on() const { return density_diffusion > 0.0; }
   bool shifting_on() const { return particle_shifting > 0.0; }
+  /// Whether a term uses the drag share (set_drag_rate fills it only then).
+  bool drag_share_on() const {
+    return artificial.damping_rate > 0.0 || hydrostatic_difference_in_soil;
+  }
+  /// s_a of a drag rate lambda_a >= 0 [1/s].
+  double drag_share(double drag_rate) const {
+    if (!(drag_rate > 0.0)) return 0.0;
+    return drag_share_rate > 0.0 ? std::min(1.0, drag_rate / drag_share_rate) : 1.0;
+  }
 
   /// Throws std::invalid_argument if the scene has no water or an unknown wall condition.
   static FluidParams from_scene(const scene::Scene& s) {
@@ -81,6 +97,14 @@ struct FluidParams {
     p.viscous_coefficient = s.run.viscous_coefficient;
     p.hydrostatic_initial = w.hydrostatic_initial;
     p.particle_gradient = s.run.kernel_gradient == "particle";
+    if (w.pressure_gradient_in_soil != "symmetric" &&
+        w.pressure_gradient_in_soil != "hydrostatic_difference") {
+      throw std::invalid_argument(
+          "water.pressure_gradient_in_soil: expected symmetric or hydrostatic_difference, got '" +
+          w.pressure_gradient_in_soil + "'");
+    }
+    p.hydrostatic_difference_in_soil = w.pressure_gradient_in_soil == "hydrostatic_difference";
+    p.drag_share_rate = ArtificialViscosity::kernel_damping_rate(w.alpha, w.sound_speed, p.h, D);
     return p;
   }
 };

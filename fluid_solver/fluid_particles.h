@@ -49,6 +49,10 @@ struct FluidParticles {
   /// Per water particle: the part of `acceleration` from its wall neighbours (pressure and
   /// viscous terms; fluid_rates.h), filled with it: the walls' impulse in the solver's books.
   std::vector<Vec> wall_acceleration;
+  /// Per water particle: the part of `acceleration` by which the hydrostatic difference form
+  /// inside soil departs from the antisymmetric pressure pairs (hydrostatic_difference.h; 0
+  /// elsewhere), filled with it: an internal force that is booked, not conserved.
+  std::vector<Vec> pressure_form_acceleration;
 
   std::size_t size() const { return position.size(); }
   std::size_t wall_count() const { return size() - n_free; }

@@ -8,6 +8,7 @@
 #include "fluid_solver/continuity.h"
 #include "fluid_solver/density_diffusion.h"
 #include "fluid_solver/density_diffusion_gradient.h"
+#include "fluid_solver/hydrostatic_difference.h"
 #include "fluid_solver/particle_gradient.h"
 #include "fluid_solver/pressure_force.h"
 #include "fluid_solver/viscosity_morris.h"
@@ -40,6 +41,11 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
   const double mu = prm.mu, eta2 = prm.eta2;
   const ArtificialViscosity av = prm.artificial;
   const Vec g = prm.gravity;
+  const Vec rho0_g = prm.eos.rho0() * g;  // hydrostatic_difference.h
+  const bool hydrostatic_difference = prm.hydrostatic_difference_in_soil;
+  // The artificial viscosity yields to the drag share only when drag-limited
+  // (artificial_viscosity.h).
+  const double av_cut_weight = prm.artificial.damping_rate > 0.0 ? 1.0 : 0.0;
   const DensityDiffusion<D> diffusion(prm.density_diffusion, prm.h, prm.eos, g);
   if constexpr (kDiffusion) {
     fill_diffusion_states(diffusion, P);
@@ -50,6 +56,7 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
     }
   }
   P.wall_acceleration.resize(P.n_free);
+  P.pressure_form_acceleration.resize(P.n_free);
   const Vec* departure_gradient = P.departure_gradient.data();
   const DiffusionState* diffusion_state = P.diffusion_state.data();
   double max_v2 = 0.0, max_a2 = 0.0;
@@ -58,6 +65,9 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
     const Vec v_a = vel[a];
     const double rho_a = rho[a], inv_rho_a = inv_rho[a], p_a = p[a], c_a = c[a];
     Vec acc = Vec::Zero();
+    // Inside soil the pressure term is summed in both forms and blended after the loops.
+    const bool in_soil = hydrostatic_difference && cut[a] > 0.0;
+    SoilPressureSums<D> soil_pressure;
     double divergence = 0.0;
     double diffusion_sum = 0.0;  // D_a / (delta h c0), water neighbours only (density_diffusion.h)
     DiffusionState diffusion_a;
@@ -69,8 +79,16 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
       const Vec grad_w = (grad_factor * (0.5 * (scale[a] + scale[b]))) * it->x_ab;
       const Vec v_ab = v_a - vel[b];
       divergence += continuity_term<D>(volume[b], v_ab, grad_w);
-      acc +=
-          pressure_acceleration<D>(m[b], pressure_sign * p_a, p[b], inv_rho_a, inv_rho[b], grad_w);
+      if (in_soil) {
+        soil_pressure.add(false,
+                          pressure_acceleration<D>(m[b], pressure_sign * p_a, p[b], inv_rho_a,
+                                                   inv_rho[b], grad_w),
+                          m[b], p_a, p[b], inv_rho_a, inv_rho[b], rho0_g.dot(it->x_ab), volume[b],
+                          grad_factor * (0.5 * (scale[a] + scale[b])), it->r, grad_w);
+      } else {  // the expression as before the option: the same rounding (bitwise unchanged)
+        acc += pressure_acceleration<D>(m[b], pressure_sign * p_a, p[b], inv_rho_a, inv_rho[b],
+                                        grad_w);
+      }
       if constexpr (kRegularised) {
         const double r2 = it->r * it->r;
         const double inv_r2_eta2 = 1.0 / (r2 + eta2);
@@ -85,9 +103,9 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
                                                 Vec(visc_vel[a] - visc_vel[b]));
         }
         if constexpr (kArtificial) {
-          acc +=
-              av.acceleration<D>(m[b], Vec(visc_vel[a] - visc_vel[b]), it->x_ab, inv_r2_eta2, c_a,
-                                 c[b], rho_a, rho[b], grad_w, 1.0 - 0.5 * (cut[a] + cut[b]));
+          acc += av.acceleration<D>(m[b], Vec(visc_vel[a] - visc_vel[b]), it->x_ab, inv_r2_eta2,
+                                    c_a, c[b], rho_a, rho[b], grad_w,
+                                    1.0 - av_cut_weight * 0.5 * (cut[a] + cut[b]));
         }
       }
     }
@@ -103,8 +121,16 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
       const double grad_factor = kernel.grad_factor(it->r);
       const Vec grad_w = (grad_factor * scale[a]) * it->x_ab;
       divergence += continuity_term<D>(volume[b], Vec(v_a - vel[b]), grad_w);
-      add_wall_term(
-          pressure_acceleration<D>(m[b], pressure_sign * p_a, p[b], inv_rho_a, inv_rho[b], grad_w));
+      if (in_soil) {
+        soil_pressure.add(true,
+                          pressure_acceleration<D>(m[b], pressure_sign * p_a, p[b], inv_rho_a,
+                                                   inv_rho[b], grad_w),
+                          m[b], p_a, p[b], inv_rho_a, inv_rho[b], rho0_g.dot(it->x_ab), volume[b],
+                          grad_factor * scale[a], it->r, grad_w);
+      } else {
+        add_wall_term(pressure_acceleration<D>(m[b], pressure_sign * p_a, p[b], inv_rho_a,
+                                               inv_rho[b], grad_w));
+      }
       if constexpr (kNoSlip && (kMorris || kArtificial)) {
         const Vec v_ab = visc_vel[a] - wall_v[b];
         const double r2 = it->r * it->r;
@@ -116,13 +142,21 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
         }
         if constexpr (kArtificial) {
           add_wall_term(av.acceleration<D>(m[b], v_ab, it->x_ab, inv_r2_eta2, c_a, c[b], rho_a,
-                                           rho[b], grad_w, 1.0 - cut[a]));
+                                           rho[b], grad_w, 1.0 - av_cut_weight * cut[a]));
         }
       }
+    }
+    Vec form_residual = Vec::Zero();
+    if (in_soil) {
+      const auto split = soil_pressure.split(cut[a], inv_rho_a, rho0_g);
+      acc += split.total;
+      acc_wall += split.walls;
+      form_residual = split.residual;
     }
     acc += g;
     P.acceleration[a] = acc;
     P.wall_acceleration[a] = acc_wall;
+    P.pressure_form_acceleration[a] = form_residual;
     if constexpr (kDiffusion) {
       P.density_rate[a] = rho_a * divergence + diffusion.coefficient() * diffusion_sum;
     } else {

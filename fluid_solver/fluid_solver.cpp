@@ -77,6 +77,8 @@ std::vector<std::string> FluidSolver<D>::active_terms() const {
     terms.push_back("artificial_viscosity");
     if (params_.artificial.damping_rate > 0.0) terms.push_back("artificial_viscosity_drag_limited");
   }
+  if (params_.hydrostatic_difference_in_soil)
+    terms.push_back("pressure_gradient_hydrostatic_difference_in_soil");
   if (params_.diffusion_on()) terms.push_back("density_diffusion");
   if (params_.shifting_on()) terms.push_back("particle_shifting");
   if (particles_.wall_count() > 0)
@@ -246,9 +248,9 @@ void FluidSolver<D>::set_drag_rate(const std::vector<double>& rate) {
   std::vector<double>& cut = particles_.viscosity_cut;
   std::fill(cut.begin(), cut.end(), 0.0);
   viscosity_cut_nonzero_ = false;
-  if (params_.artificial.damping_rate <= 0.0) return;  // "full", or no artificial viscosity
+  if (!params_.drag_share_on()) return;  // no term uses the drag share
   for (std::size_t i = 0; i < rate.size(); ++i) {
-    cut[overlap_index_[i]] = params_.artificial.cut(rate[i]);
+    cut[overlap_index_[i]] = params_.drag_share(rate[i]);
     viscosity_cut_nonzero_ = viscosity_cut_nonzero_ || cut[overlap_index_[i]] > 0.0;
   }
 }

@@ -21,6 +21,9 @@
 //   outflow       -sum m v of the particles removed in outflow zones or leaving the domain
 //   reservoir     sum m v of the particles a reservoir adds, minus those it removes
 //   damping       -sum m v of the velocities zeroed at the end of the damping stage
+//   pressure_form dt sum m a_form over all free particles (zone particles too): what the
+//                 hydrostatic difference form inside soil adds beyond antisymmetric pressure
+//                 pairs (hydrostatic_difference.h); 0 with the symmetric form
 // so that P^{n+1} - P^n = sum of the book + dt sum m a_int (the coupler's ledger) + dt sum m
 // a_pair, the last zero to round-off where the pair forces are antisymmetric (the symmetric
 // pressure form; not the difference form that particle shifting uses, pressure_force.h).
@@ -46,11 +49,13 @@ enum WaterImpulse : std::size_t {
   kWaterReservoir,
   kWaterDamping,
   kWaterVerletChain,
+  kWaterPressureForm,
   kWaterImpulseCount
 };
 
 inline std::vector<std::string> water_impulse_sources() {
-  return {"gravity", "walls", "inflow", "outflow", "reservoir", "damping", "verlet_chain"};
+  return {"gravity",   "walls",   "inflow",       "outflow",
+          "reservoir", "damping", "verlet_chain", "pressure_form"};
 }
 
 template <int D>
@@ -76,10 +81,13 @@ void book_water_integration(const FluidParticles<D>& P, const sph::Vec<D>& g, do
   double mass = 0.0;                    // of the integrated particles
   double walls[D] = {}, chain[D] = {};  // sum m a_wall; sum m (q - v + dt_previous a_own)
   double zone[D] = {};                  // zone particles: sum m (u_end - v) - dt m (...)
-#pragma omp parallel for schedule(static) reduction(+ : mass, walls[:D], chain[:D], zone[:D])
+  double form[D] = {};                  // sum m a_form
+#pragma omp parallel for schedule(static) \
+    reduction(+ : mass, walls[:D], chain[:D], zone[:D], form[:D])
   for (std::int64_t a = 0; a < n; ++a) {
     const double m = P.mass[a];
     const Vec& a_own = P.acceleration[a];
+    for (int k = 0; k < D; ++k) form[k] += m * P.pressure_form_acceleration[a][k];
     if (P.zone[a] >= 0) {
       const Vec driven = (zones.end_velocity(P.zone[a]) - P.velocity[a]) -
                          dt * (a_own - g - P.wall_acceleration[a] + P.interaction[a]);
@@ -97,6 +105,7 @@ void book_water_integration(const FluidParticles<D>& P, const sph::Vec<D>& g, do
     book[kWaterWalls][k] += dt * walls[k];
     book[kWaterVerletChain][k] += chain[k];
     book[kWaterInflow][k] += zone[k];
+    book[kWaterPressureForm][k] += dt * form[k];
   }
 }
 

@@ -112,6 +112,7 @@ struct WaterPhase {
   /// "drag_limited" (the seepage drag replaces the artificial viscosity where it damps faster;
   /// fluid_solver/artificial_viscosity.h) | "full"
   std::string artificial_viscosity_in_soil = "drag_limited";
+  std::string pressure_gradient_in_soil = "symmetric";
   double particle_shifting = 0.0;   ///< A of the Fickian particle shifting (Lind 2012); 0: off
   bool hydrostatic_initial = true;  ///< initial density from hydrostatic pressure (inverse eq. 4)
   std::string initial_velocity = "none";   ///< "none" (at rest) | "taylor_green"

@@ -94,6 +94,7 @@ Scene build_scene(const toml::table& root) {
     w.density_diffusion = *(*water)["density_diffusion"].value<double>();
     w.density_diffusion_correction = text_of(*water, "density_diffusion_correction");
     w.artificial_viscosity_in_soil = text_of(*water, "artificial_viscosity_in_soil");
+    w.pressure_gradient_in_soil = text_of(*water, "pressure_gradient_in_soil");
     w.particle_shifting = *(*water)["particle_shifting"].value<double>();
     w.hydrostatic_initial = *(*water)["hydrostatic_initial"].value<bool>();
     w.initial_velocity = text_of(*water, "initial_velocity");

@@ -180,6 +180,19 @@ void add_water(SceneSchema& s) {
                "least as fast as without soil and a Darcy flow feels no artificial viscosity "
                "(fluid_solver/artificial_viscosity.h); \"full\": everywhere as in free water "
                "(the discharge under the seepage weir 2 % lower at dp 10 mm)."));
+  s.keys.push_back(
+      Key("water.pressure_gradient_in_soil", T::String)
+          .fallback("\"symmetric\"")
+          .one_of({"symmetric", "hydrostatic_difference"})
+          .doc("The pressure gradient of the water inside soil. \"symmetric\": the seed paper's "
+               "form everywhere; \"hydrostatic_difference\": where the seepage drag holds the "
+               "particles (the drag share of water.artificial_viscosity_in_soil) and the kernel "
+               "support is full, the difference form of the departure from still water plus "
+               "rho0 g, exact for still water at any particle arrangement, so that the Darcy flow "
+               "does not pay for the lattice's strain (the vertical seepage is ~30 times as "
+               "sensitive to the operator as the pressure) and the sand's water lattice does not "
+               "collapse; water momentum is then not conserved pair by pair inside soil "
+               "(fluid_solver/hydrostatic_difference.h, docs/coupling.md)."));
   s.keys.push_back(Key("water.gamma", T::Float)
                        .fallback("7.0")
                        .at_least(1)

@@ -68,7 +68,8 @@ struct Cloud {
     list.build(P.position.data(), x.size(), x.size(), 2.0 * params.h, sph::DomainBox<2>{});
   }
   void rates(double alpha) {
-    params.artificial = ArtificialViscosity{alpha, 0.0, params.h, 0.0};
+    // The drag limit on (a positive r_av): the loop applies the shares set in viscosity_cut.
+    params.artificial = ArtificialViscosity{alpha, 0.0, params.h, 1.0};
     compute_fluid_rates(list, sph::CubicSpline<2>(params.h), params, P);
   }
 };
