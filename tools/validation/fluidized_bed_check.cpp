@@ -45,16 +45,22 @@ void water_in_bed(const std::string& run_dir, const nlohmann::json& run, Fluidiz
     bed_bottom = std::min(bed_bottom, std::min(a, b));
   }
   const double from = bed_bottom + 2.0 * dp, to = out.bed_height_final - 2.0 * dp;
+  // The region's volume: the inflow zone's extent across the flow (it spans the bed's section)
+  // times the bed's height.
+  double region = to - from;
+  for (std::size_t k = 0; k < dim; ++k)
+    if (dir[k] == 0.0) region *= zone_hi[k] - zone_lo[k];
   io::SnapshotReader reader(run_dir + "/fluid.h5");
-  double velocity = 0, flux = 0;
+  double velocity = 0, flux = 0, flux_density = 0, fill = 0;
   int snapshots = 0;
   for (const auto& snap : reader.snapshots()) {
     if (snap.time < window_start - 1e-12) continue;
     const auto x = reader.read_f64(snap.index, "position");
     const auto v = reader.read_f64(snap.index, "velocity");
     const auto rho = reader.read_f64(snap.index, "density");
+    const auto mass = reader.read_f64(snap.index, "mass");
     const auto fixed = reader.read_u8(snap.index, "fixed");
-    double sum_v = 0, sum_flux = 0, sum_inflow_rho = 0;
+    double sum_v = 0, sum_flux = 0, sum_inflow_rho = 0, sum_mv = 0, sum_volume = 0;
     std::size_t n = 0, n_inflow = 0;
     for (std::size_t i = 0; i < x.rows; ++i) {
       if (fixed.values[i]) continue;
@@ -70,17 +76,23 @@ void water_in_bed(const std::string& run_dir, const nlohmann::json& run, Fluidiz
       if (s < from || s > to) continue;
       sum_v += vs;
       sum_flux += rho.values[i] * vs;
+      sum_mv += mass.values[i] * vs;
+      sum_volume += mass.values[i] / rho.values[i];
       ++n;
     }
     if (n == 0 || n_inflow == 0) continue;
     const double rho_inflow = sum_inflow_rho / n_inflow;
     velocity += sum_v / n / out.superficial_velocity;
     flux += sum_flux / n / (rho_inflow * out.superficial_velocity);
+    flux_density += sum_mv / region / (rho_inflow * out.superficial_velocity);
+    fill += sum_volume / region;
     ++snapshots;
   }
   if (snapshots == 0) throw std::runtime_error(run_dir + ": no water in the bed in the window");
   out.velocity_ratio = velocity / snapshots;
   out.mass_flux_ratio = flux / snapshots;
+  out.mass_flux_density_ratio = flux_density / snapshots;
+  out.volume_fill = fill / snapshots;
 }
 
 }  // namespace

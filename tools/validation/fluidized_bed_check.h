@@ -42,6 +42,14 @@ struct FluidizedBedCheck {
   double superficial_velocity = 0;  ///< U = Q_max / cross_section [m/s]
   double velocity_ratio = 0;        ///< mean v / U
   double mass_flux_ratio = 0;       ///< mean rho v / (rho_inflow U)
+  /// The mass flux through the bed as a density, sum m v / V_region, against rho_inflow U: the
+  /// conserved quantity, whatever the particles' spacing.
+  double mass_flux_density_ratio = 0;
+  /// sum (m / rho) / V_region: how much of the region the particles' volumes fill; 1 when their
+  /// spacing matches their density. Above 1 the particles are crowded (their lattice has
+  /// rearranged, which the continuity density does not register), and the mean particle velocity
+  /// then reads the flux low by that factor.
+  double volume_fill = 0;
 };
 
 FluidizedBedCheck check_fluidized_bed(const std::string& run_dir, double steady_window = 1.0);

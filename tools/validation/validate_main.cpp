@@ -126,6 +126,11 @@ int report_fluidized_bed(const porosph::validation::FluidizedBedCheck& c) {
       "water in the bed (steady window): mean velocity %.4f x Q/A (U = %.4g m/s), mass flux"
       " rho v %.4f x rho_inflow U\n",
       c.velocity_ratio, c.superficial_velocity, c.mass_flux_ratio);
+  std::printf(
+      "mass flux through the bed sum m v / V: %.4f x rho_inflow U; the particles' volumes m / rho"
+      " fill %.4f of the bed (1: their spacing matches their density; above 1 they are crowded and"
+      " the mean particle velocity reads the flux low by that factor)\n",
+      c.mass_flux_density_ratio, c.volume_fill);
   // Issue 23: the water inside a uniform bed moves at the superficial velocity Q / A within 1 %.
   print_summary("water velocity in the bed / (Q/A)", fmt("%.4f", c.velocity_ratio),
                 "1 (Darcy velocity = Q/A)", fmt("%+.2f %%", 100 * (c.velocity_ratio - 1)), "1 %",
