@@ -38,11 +38,18 @@ struct ArtificialViscosity {
     return alpha * c0 * kPi * kPi / (2.0 * (dimension + 2) * h);
   }
 
-  /// s_a = min(1, lambda_a / r_av) for a drag rate lambda_a >= 0 [1/s]: the share of the term
-  /// the drag replaces; 0 when the drag limit is off.
+  /// The drag share s_a = min(1, lambda_a / r) of a drag rate lambda_a >= 0 [1/s] against the rate
+  /// r >= 0: 0 without drag; 1 wherever there is drag when r = 0 (alpha = 0: no kernel-scale
+  /// damping to compare with). Also used by the hydrostatic difference form (fluid_params.h).
+  static double drag_share(double drag_rate, double rate) {
+    if (!(drag_rate > 0.0)) return 0.0;
+    return rate > 0.0 ? std::min(1.0, drag_rate / rate) : 1.0;
+  }
+
+  /// s_a = min(1, lambda_a / r_av): the share of the term the drag replaces; 0 when the drag limit
+  /// is off.
   double cut(double drag_rate) const {
-    if (damping_rate <= 0.0 || !(drag_rate > 0.0)) return 0.0;
-    return std::min(1.0, drag_rate / damping_rate);
+    return damping_rate > 0.0 ? drag_share(drag_rate, damping_rate) : 0.0;
   }
 
   /// Pi_ab from v_ab . x_ab, 1 / (r_ab^2 + eta^2) (shared with the other regularised terms of

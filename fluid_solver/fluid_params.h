@@ -2,7 +2,6 @@
 // solver's context: no globals).
 #pragma once
 
-#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -53,8 +52,7 @@ struct FluidParams {
   }
   /// s_a of a drag rate lambda_a >= 0 [1/s].
   double drag_share(double drag_rate) const {
-    if (!(drag_rate > 0.0)) return 0.0;
-    return drag_share_rate > 0.0 ? std::min(1.0, drag_rate / drag_share_rate) : 1.0;
+    return ArtificialViscosity::drag_share(drag_rate, drag_share_rate);
   }
 
   /// Throws std::invalid_argument if the scene has no water or an unknown wall condition.

@@ -76,18 +76,17 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
     for (auto it = nl.begin(a); it != nl.mid(a); ++it) {
       const std::int32_t b = it->b;
       const double grad_factor = kernel.grad_factor(it->r);
-      const Vec grad_w = (grad_factor * (0.5 * (scale[a] + scale[b]))) * it->x_ab;
+      const double scaled_factor = grad_factor * (0.5 * (scale[a] + scale[b]));
+      const Vec grad_w = scaled_factor * it->x_ab;
       const Vec v_ab = v_a - vel[b];
       divergence += continuity_term<D>(volume[b], v_ab, grad_w);
+      const Vec pressure_term =
+          pressure_acceleration<D>(m[b], pressure_sign * p_a, p[b], inv_rho_a, inv_rho[b], grad_w);
       if (in_soil) {
-        soil_pressure.add(false,
-                          pressure_acceleration<D>(m[b], pressure_sign * p_a, p[b], inv_rho_a,
-                                                   inv_rho[b], grad_w),
-                          m[b], p_a, p[b], inv_rho_a, inv_rho[b], rho0_g.dot(it->x_ab), volume[b],
-                          grad_factor * (0.5 * (scale[a] + scale[b])), it->r, grad_w);
-      } else {  // the expression as before the option: the same rounding (bitwise unchanged)
-        acc += pressure_acceleration<D>(m[b], pressure_sign * p_a, p[b], inv_rho_a, inv_rho[b],
-                                        grad_w);
+        soil_pressure.add(false, pressure_term, m[b], p_a, p[b], inv_rho_a, inv_rho[b],
+                          rho0_g.dot(it->x_ab), volume[b], scaled_factor, it->r, grad_w);
+      } else {
+        acc += pressure_term;
       }
       if constexpr (kRegularised) {
         const double r2 = it->r * it->r;
@@ -119,17 +118,16 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
     for (auto it = nl.mid(a); it != nl.end(a); ++it) {
       const std::int32_t b = it->b;
       const double grad_factor = kernel.grad_factor(it->r);
-      const Vec grad_w = (grad_factor * scale[a]) * it->x_ab;
+      const double scaled_factor = grad_factor * scale[a];
+      const Vec grad_w = scaled_factor * it->x_ab;
       divergence += continuity_term<D>(volume[b], Vec(v_a - vel[b]), grad_w);
+      const Vec pressure_term =
+          pressure_acceleration<D>(m[b], pressure_sign * p_a, p[b], inv_rho_a, inv_rho[b], grad_w);
       if (in_soil) {
-        soil_pressure.add(true,
-                          pressure_acceleration<D>(m[b], pressure_sign * p_a, p[b], inv_rho_a,
-                                                   inv_rho[b], grad_w),
-                          m[b], p_a, p[b], inv_rho_a, inv_rho[b], rho0_g.dot(it->x_ab), volume[b],
-                          grad_factor * scale[a], it->r, grad_w);
+        soil_pressure.add(true, pressure_term, m[b], p_a, p[b], inv_rho_a, inv_rho[b],
+                          rho0_g.dot(it->x_ab), volume[b], scaled_factor, it->r, grad_w);
       } else {
-        add_wall_term(pressure_acceleration<D>(m[b], pressure_sign * p_a, p[b], inv_rho_a,
-                                               inv_rho[b], grad_w));
+        add_wall_term(pressure_term);
       }
       if constexpr (kNoSlip && (kMorris || kArtificial)) {
         const Vec v_ab = visc_vel[a] - wall_v[b];

@@ -33,6 +33,7 @@
 
 #include <algorithm>
 
+#include "fluid_solver/particle_gradient.h"
 #include "sph/vector.h"
 
 namespace porosph::fluid {
@@ -57,10 +58,11 @@ struct SoilPressureSums {
     trace -= volume_b * grad_factor * r * r;
   }
 
-  /// c_a of t = tr(L_a) / D (above).
+  /// c_a of t = tr(L_a) / D (above), with the thresholds of the per-particle gradient.
   static double completeness(double t) {
-    if (!(t > 0.90) || t > 1.10) return 0.0;
-    return std::min(1.0, (t - 0.90) / 0.07);
+    using G = ParticleGradient;
+    if (!(t > G::kFrom) || t > G::kMax) return 0.0;
+    return std::min(1.0, (t - G::kFrom) / (G::kFull - G::kFrom));
   }
 
   struct Split {

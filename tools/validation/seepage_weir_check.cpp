@@ -45,6 +45,23 @@ GridSeries unit_reference(const Box& layer, double weir_x0, double weir_x1, doub
   });
 }
 
+/// The FV discharge under the weir's centre (K = 1) with fixed heads on the top cells given per
+/// cell (NaN: no flow, under the weir or without water above it); cells of `cell` m.
+double discharge_with_top_heads(const Box& layer, double weir_mid, double cell,
+                                const std::vector<double>& top_heads) {
+  LaplaceProblem problem;
+  problem.x0 = layer.x0, problem.x1 = layer.x1, problem.y0 = layer.y0, problem.y1 = layer.y1;
+  problem.cells_x = static_cast<int>(top_heads.size());
+  problem.cells_y = static_cast<int>(std::lround((layer.y1 - layer.y0) / cell));
+  for (std::size_t i = 0; i < top_heads.size(); ++i) {
+    if (std::isnan(top_heads[i])) continue;
+    const double centre = layer.x0 + (i + 0.5) * cell;
+    problem.fixed_heads.push_back(
+        {Side::kTop, centre - 0.25 * cell, centre + 0.25 * cell, top_heads[i]});
+  }
+  return solve_laplace(problem).discharge_across_vertical(weir_mid, layer.y0, layer.y1);
+}
+
 }  // namespace
 
 double SeepageWeirCheck::max_pressure_error() const {
@@ -94,6 +111,11 @@ SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
   const Box exit{weir.x1, layer.y1 - dp, weir.x1 + out.exit_stretch, layer.y1};
   std::vector<double> probe_h(probe_points.size(), 0.0);
   double h1 = 0, h2 = 0, exit_gradient = 0;
+  // The run's own heads on the layer's top, per FV cell of the finest reference grid.
+  const double cell = 0.0025;
+  const std::size_t top_cells = static_cast<std::size_t>(std::lround((layer.x1 - layer.x0) / cell));
+  std::vector<double> top_sum(top_cells, 0.0), top_count(top_cells, 0.0);
+  double near_sum = 0, near_count = 0;  // the upstream pool within 0.1 m of the weir
   for (const auto& snap : snapshots) {
     if (snap.time < out.window_start - 1e-12) continue;
     const WaterSnapshot s = read_water_snapshot(reader, snap.index);
@@ -106,7 +128,17 @@ SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
       if (!s.free(i)) continue;
       const double xi = s.px(i), yi = s.py(i);
       const double head = yi + water.pressure_head(s.p.values[i]);
-      if (upstream.contains(xi, yi) && yi < top_up - margin) sum_h1 += head, ++n1;
+      if (upstream.contains(xi, yi) && yi < top_up - margin) {
+        sum_h1 += head, ++n1;
+        if (xi > weir.x0 - 0.1) near_sum += head, ++near_count;
+      }
+      if (yi > layer.y1 && yi < layer.y1 + margin) {    // 0 .. 2 dp above the layer
+        const double u = (xi - layer.x0) / cell - 0.5;  // cells whose centre lies within dp
+        const long first = std::max(0L, static_cast<long>(std::ceil(u - dp / cell)));
+        const long last = std::min(static_cast<long>(top_cells) - 1,
+                                   static_cast<long>(std::floor(u + dp / cell)));
+        for (long k = first; k <= last; ++k) top_sum[k] += head, top_count[k] += 1.0;
+      }
       if (downstream.contains(xi, yi) && yi < top_down - margin) sum_h2 += head, ++n2;
       if (under.contains(xi, yi)) flux += s.volume(i) * s.v.values[2 * i];
       if (exit.contains(xi, yi)) exit_v += s.v.values[2 * i + 1], ++n_exit;
@@ -134,10 +166,20 @@ SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
   out.head_downstream = h2 / n;
   for (double q : out.discharge_history) out.discharge += q / n;
   out.exit_gradient = exit_gradient / n;
+  std::vector<double> top_heads(top_cells, std::nan(""));
+  for (std::size_t k = 0; k < top_cells; ++k) {
+    const double centre = layer.x0 + (k + 0.5) * cell;
+    if (top_count[k] > 0 && (centre < weir.x0 || centre > weir.x1))
+      top_heads[k] = top_sum[k] / top_count[k];
+  }
+  out.discharge_own_heads =
+      out.conductivity * discharge_with_top_heads(layer, mid, cell, top_heads);
 
   const GridSeries reference =
       unit_reference(layer, weir.x0, weir.x1, out.exit_stretch, probe_points);
   const double dh = out.head_upstream - out.head_downstream;
+  if (near_count > 0)
+    out.upstream_head_near_weir = (near_sum / near_count - out.head_upstream) / dh;
   out.discharge_reference = out.conductivity * dh * reference.estimates[0].extrapolated;
   out.discharge_reference_order = reference.estimates[0].order;
   out.exit_gradient_reference = dh * reference.estimates[1].extrapolated;

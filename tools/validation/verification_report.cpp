@@ -133,6 +133,10 @@ int report_seepage_weir(const SeepageWeirCheck& c) {
   for (double q : c.discharge_history) q_min = std::min(q_min, q), q_max = std::max(q_max, q);
   std::printf("discharge over the window: %.5e .. %.5e m^2/s (steadiness %.2f%%)\n", q_min, q_max,
               100 * (q_max - q_min) / c.discharge);
+  std::printf(
+      "the layer alone: FV with the run's own heads 0 .. 2 dp above the layer %.5e m^2/s, SPH"
+      " %+.2f%% from it; the upstream pool within 0.1 m of the weir %+.2f%% of dh from its mean\n",
+      c.discharge_own_heads, 100 * c.layer_error(), 100 * c.upstream_head_near_weir);
   std::printf("%8s %8s %12s %12s %9s %10s %10s %9s\n", "x", "y", "p", "p_ref", "p err", "head",
               "head_ref", "err/dh");
   for (const auto& p : c.probes) {
