@@ -32,6 +32,8 @@ struct FluidParticles {
   /// Index of the inflow zone (scene water.inflows) whose prescribed velocity a water particle
   /// follows (flow_zones.h); -1 for free water and for walls. Array resizes fill 0: set it.
   std::vector<std::int32_t> zone;
+  /// Walls: index of the moving wall it belongs to (moving_walls.h); -1 for fixed walls and water.
+  std::vector<std::int32_t> wall_motion;
 
   // Derived per step, not part of the particle state (not resized, permuted or checkpointed with
   // the arrays above; whoever fills them sizes them):
@@ -118,6 +120,7 @@ struct FluidParticles {
     fn(p.interaction...), fn(p.wall_velocity...), fn(p.density...), fn(p.density_previous...);
     fn(p.density_rate...), fn(p.pressure...), fn(p.sound_speed...), fn(p.mass...);
     fn(p.remove_at...), fn(p.id...), fn(p.fixed...), fn(p.zone...), fn(p.viscosity_cut...);
+    fn(p.wall_motion...);
   }
 
   template <class T>

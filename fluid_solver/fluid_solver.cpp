@@ -48,6 +48,7 @@ FluidSolver<D>::FluidSolver(const scene::Scene& s)
       damping_(DampingStage::from_scene(s)),
       zones_(*s.water, params_.dp, damping_.duration()),
       reservoirs_(*s.water, params_.gravity, params_.dp, params_.h, params_.eos),
+      moving_walls_(s),
       pore_fields_(s.has_soil()) {
   if (s.run.kernel == "cubic_spline") {
     kernel_kind_ = KernelKind::CubicSpline;
@@ -139,6 +140,7 @@ void FluidSolver<D>::compute_rates_with(const Kernel& kernel) {
     update_wall_state(neighbours_, kernel, params_, particles_, level);
   }
   const RateSummary r = compute_fluid_rates(neighbours_, kernel, params_, particles_, level);
+  moving_walls_.measure_forces(neighbours_, kernel, particles_, params_.shifting_on() ? -1.0 : 1.0);
   if (params_.shifting_on()) {
     shifting_.compute(neighbours_, kernel, params_.dp, r.max_speed, particles_);
   }
@@ -150,6 +152,11 @@ void FluidSolver<D>::compute_rates_with(const Kernel& kernel) {
 template <int D>
 double FluidSolver<D>::evaluate(const sph::PreparedObservable<D>& o,
                                 const sph::ParticleView<D>& view) const {
+  if (o.kind == sph::PreparedObservable<D>::Kind::WallForce) {  // moving_walls.h
+    const int k = moving_walls_.index_of(o.wall);
+    return k < 0 ? std::numeric_limits<double>::quiet_NaN()
+                 : moving_walls_.force(static_cast<std::size_t>(k)).dot(o.direction);
+  }
   if (kernel_kind_ == KernelKind::CubicSpline) return sph::evaluate_observable(o, view, cubic_);
   return sph::evaluate_observable(o, view, wendland_);
 }
@@ -266,6 +273,7 @@ void FluidSolver<D>::advance(double dt) {
   interaction_fresh_ = false;
   book_.clear();
   if (!damping_.frozen(time_)) integrate(dt);  // else the water waits (damping_stage.h)
+  moving_walls_.move(particles_, dt);
   time_ += dt;
   ++step_;
   remove_expired_walls();

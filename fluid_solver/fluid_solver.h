@@ -14,6 +14,7 @@
 #include "fluid_solver/flow_zones.h"
 #include "fluid_solver/fluid_params.h"
 #include "fluid_solver/fluid_particles.h"
+#include "fluid_solver/moving_walls.h"
 #include "fluid_solver/particle_shifting.h"
 #include "fluid_solver/pore_fields.h"
 #include "fluid_solver/reservoirs.h"
@@ -60,6 +61,10 @@ class FluidSolver {
   /// sent before a snapshot; empty: no soil near), for the snapshot's `porosity` and
   /// `pore_velocity` fields (scenes with soil; pore_fields.h). Throws on a size mismatch.
   void set_porosity(const std::vector<double>& porosity);
+  /// The speeds of the scene's walls for the next advance (StepCommand.wall_speed, one per
+  /// [[walls]] entry; empty: all at rest): the moving ones move by dt times theirs
+  /// (moving_walls.h).
+  void set_wall_speeds(const std::vector<double>& speeds) { moving_walls_.set_speeds(speeds); }
   /// Modified Verlet step of the free water; prescribed motion of the inflow zones' particles and
   /// renewal of the zones (flow_zones.h); periodic wrap; removal of the water that left the domain,
   /// entered an outflow zone or rose above a reservoir's level (counted in removed_count); refill
@@ -134,6 +139,7 @@ class FluidSolver {
   DampingStage damping_;
   FlowZones<D> zones_;
   Reservoirs<D> reservoirs_;
+  MovingWalls<D> moving_walls_;  ///< [[walls]] with moves_with
   std::vector<sph::PreparedObservable<D>> observables_;
 
   FluidParticles<D> particles_;

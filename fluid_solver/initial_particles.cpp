@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "fluid_solver/hydrostatic_initial.h"
+#include "fluid_solver/moving_walls.h"
 #include "fluid_solver/taylor_green_initial.h"
 #include "sph/geometry.h"
 
@@ -39,13 +40,17 @@ InitialParticles<D> initial_particles(const scene::Scene& s, const FluidParams<D
   }
   InitialParticles<D> out;
   std::vector<double> wall_remove_at;
-  for (const auto& wall : water_walls) {
+  std::vector<std::int32_t> wall_motion;
+  const std::vector<std::int32_t> motion = MovingWalls<D>::motion_of_water_walls(s);
+  for (std::size_t j = 0; j < water_walls.size(); ++j) {
+    const scene::Shape& wall = water_walls[j];
     for (const Vec& x : sph::fill_shape<D>(wall, dp)) {
       Vec wrapped = x;  // along periodic axes the domain itself closes the flow: no wall beyond it
       box.wrap(wrapped);
       if (wrapped != x) continue;
       walls.push_back(x);
       wall_remove_at.push_back(wall.remove_at);
+      wall_motion.push_back(motion[j]);
       if (wall.remove_at >= 0.0 &&
           (out.next_wall_removal < 0.0 || wall.remove_at < out.next_wall_removal))
         out.next_wall_removal = wall.remove_at;
@@ -68,6 +73,7 @@ InitialParticles<D> initial_particles(const scene::Scene& s, const FluidParams<D
     P.pressure[i] = P.density_rate[i] = 0.0;
     P.sound_speed[i] = params.eos.c0();
     P.remove_at[i] = wall ? wall_remove_at[i - P.n_free] : -1.0;
+    P.wall_motion[i] = wall ? wall_motion[i - P.n_free] : -1;
     P.id[i] = static_cast<std::int64_t>(i);
     P.fixed[i] = wall ? 1 : 0;
   }

@@ -121,6 +121,12 @@ struct StepCommand {
   /// Water only, with write_output: the soil porosity around each overlap particle (1 in free
   /// water; empty: no soil near). Output only (docs/water-in-soil.md).
   std::vector<double> porosity;
+  /// Per [[walls]] entry of the scene (empty: none moves): its speed along its move_direction
+  /// for this step [m/s] (docs/scene.md, walls[].moves_with).
+  std::vector<double> wall_speed;
+  /// Per [[soil.loads]] entry (empty: none takes one): the force added to it along the positive
+  /// direction of its traction's axis [N/m^(3-D)] (docs/scene.md, soil.loads[].plus_force_from).
+  std::vector<double> load_force;
   std::vector<double> other_region_min, other_region_max;
   /// After advancing, write checkpoint `checkpoint_index` (>= 1) and confirm it in the next state.
   bool write_checkpoint = false;

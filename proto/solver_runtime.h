@@ -64,6 +64,24 @@ struct has_set_drag_rate<Solver, std::void_t<decltype(std::declval<Solver&>().se
                                      std::declval<const std::vector<double>&>()))>>
     : std::true_type {};
 
+/// True for a solver with set_wall_speeds(const std::vector<double>&) (the water solver: the
+/// speeds of the scene's moving walls, StepCommand.wall_speed).
+template <class Solver, class = void>
+struct has_set_wall_speeds : std::false_type {};
+template <class Solver>
+struct has_set_wall_speeds<Solver, std::void_t<decltype(std::declval<Solver&>().set_wall_speeds(
+                                       std::declval<const std::vector<double>&>()))>>
+    : std::true_type {};
+
+/// True for a solver with set_load_forces(const std::vector<double>&) (the soil solver: the forces
+/// added to its surface loads, StepCommand.load_force).
+template <class Solver, class = void>
+struct has_set_load_forces : std::false_type {};
+template <class Solver>
+struct has_set_load_forces<Solver, std::void_t<decltype(std::declval<Solver&>().set_load_forces(
+                                       std::declval<const std::vector<double>&>()))>>
+    : std::true_type {};
+
 /// Writes the snapshot a command asks for, after handing a solver that takes it the command's
 /// porosity.
 template <class Solver>
@@ -236,6 +254,8 @@ int run_solver_loop_unguarded(CouplingClient& client, Solver& solver, io::Snapsh
       if constexpr (has_set_saturation<Solver>::value) solver.set_saturation(command.saturation);
       if constexpr (has_set_drag_rate<Solver>::value)
         solver.set_drag_rate(command.interaction_rate);
+      if constexpr (has_set_wall_speeds<Solver>::value) solver.set_wall_speeds(command.wall_speed);
+      if constexpr (has_set_load_forces<Solver>::value) solver.set_load_forces(command.load_force);
       solver.advance(command.dt);
       if (command.write_checkpoint) {
         write_solver_checkpoint(setup, command.checkpoint_index, solver, overlap_min, overlap_max);

@@ -235,6 +235,8 @@ void to_wire(const coupling::StepCommand& in, StepCommand& out) {
   assign(out.mutable_interaction_rate(), in.interaction_rate);
   assign(out.mutable_saturation(), in.saturation);
   assign(out.mutable_porosity(), in.porosity);
+  assign(out.mutable_wall_speed(), in.wall_speed);
+  assign(out.mutable_load_force(), in.load_force);
   assign(out.mutable_other_region_min(), in.other_region_min);
   assign(out.mutable_other_region_max(), in.other_region_max);
   out.set_write_checkpoint(in.write_checkpoint);
@@ -252,6 +254,8 @@ void from_wire(const StepCommand& in, coupling::StepCommand& out) {
   assign(out.interaction_rate, in.interaction_rate());
   assign(out.saturation, in.saturation());
   assign(out.porosity, in.porosity());
+  assign(out.wall_speed, in.wall_speed());
+  assign(out.load_force, in.load_force());
   assign(out.other_region_min, in.other_region_min());
   assign(out.other_region_max, in.other_region_max());
   out.write_checkpoint = in.write_checkpoint();

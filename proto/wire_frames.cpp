@@ -92,7 +92,9 @@ std::size_t CommandFrame::prepare(const coupling::StepCommand& c) {
                 varint_field_bytes(11, c.write_checkpoint ? 1 : 0) +
                 varint_field_bytes(12, c.checkpoint_index) +
                 packed_doubles_bytes(13, c.interaction_rate.size()) +
-                packed_doubles_bytes(14, c.porosity.size());
+                packed_doubles_bytes(14, c.porosity.size()) +
+                packed_doubles_bytes(15, c.wall_speed.size()) +
+                packed_doubles_bytes(16, c.load_force.size());
   return delimited_bytes(Envelope::kCommandFieldNumber, body_bytes_);
 }
 
@@ -115,7 +117,9 @@ void CommandFrame::write(std::uint8_t* p) const {
   p = write_varint_field(11, c.write_checkpoint ? 1 : 0, p);
   p = write_varint_field(12, c.checkpoint_index, p);
   p = doubles(13, c.interaction_rate, p);
-  doubles(14, c.porosity, p);
+  p = doubles(14, c.porosity, p);
+  p = doubles(15, c.wall_speed, p);
+  doubles(16, c.load_force, p);
 }
 
 bool envelope_body(const void* data, std::size_t size, int field, const std::uint8_t** body,
@@ -253,6 +257,8 @@ bool read_command_body(const std::uint8_t* data, std::size_t size, coupling::Ste
   out.interaction_rate.clear();
   out.saturation.clear();
   out.porosity.clear();
+  out.wall_speed.clear();
+  out.load_force.clear();
   out.other_region_min.clear();
   out.other_region_max.clear();
   for (;;) {
@@ -309,6 +315,12 @@ bool read_command_body(const std::uint8_t* data, std::size_t size, coupling::Ste
         break;
       case 14:
         ok = read_packed_doubles(in, type, out.porosity);
+        break;
+      case 15:
+        ok = read_packed_doubles(in, type, out.wall_speed);
+        break;
+      case 16:
+        ok = read_packed_doubles(in, type, out.load_force);
         break;
       default:
         ok = WireFormatLite::SkipField(&in, tag);

@@ -32,6 +32,10 @@ struct Shape {
   std::string condition = "default";  ///< wall only: "default" (the phase's wall_condition) |
                                       ///< "no_slip" | "free_slip"
   std::string material;               ///< soil block only: name of its SoilMaterial
+  /// Wall only: the observable whose value is the wall's speed along move_direction [m/s] (the
+  /// wall moves as one body); empty: fixed.
+  std::string moves_with;
+  std::vector<double> move_direction;  ///< wall only, with moves_with: unit vector
 };
 
 /// Global run settings (table [run]); every scene has end_time, output_interval, dp, h_factor.
@@ -165,6 +169,16 @@ struct SoilLoad {
   double start_time = 0.0;       ///< [s]
   double ramp_time = 0.0;        ///< [s]; 0: a step
   std::string label;
+  /// The loaded particles move as one along the traction's axis (a rigid, frictionless plate):
+  /// their velocities along it are set to their mass-weighted mean after every kick.
+  bool rigid = false;
+  /// Name of an observable whose latest value [N/m^(3-D)] is added to the load's force along the
+  /// +axis of its traction's axis (e.g. the wall_force of the lid moving with a rigid plate);
+  /// empty: none.
+  std::string plus_force_from;
+  /// Material the loaded particles take from t = 0 (same density and porosity; e.g. an
+  /// impermeable one that seals the plate); empty: they keep their own.
+  std::string material;
   /// 0 before start_time, then linear up to 1 over ramp_time.
   double factor_at(double time) const;
   /// The loaded face's size: the product of the box's extents along the axes the traction does
@@ -204,7 +218,8 @@ struct SoilPhase {
 struct Observable {
   std::string name;  ///< column name in timeseries.csv and key in run.json
   std::string kind;  ///< "front_position" | "max_speed" | "pressure_at" | "kinetic_energy" |
-                     ///< "max_height" | "particle_count" | "mean_field" | "max_displacement"
+                     ///< "max_height" | "particle_count" | "mean_field" | "max_displacement" |
+                     ///< "load_velocity" | "wall_force"
   std::string phase = "water";
   std::vector<double> direction;   ///< front_position / max_height: unit direction
   std::vector<double> origin;      ///< front_position / max_height: measured from here [m]
@@ -212,6 +227,8 @@ struct Observable {
   std::string field;               ///< mean_field: "porosity", "stress_yy", "velocity_y", ...
   std::vector<double> region_min;  ///< only particles in [region_min, region_max] count [m];
   std::vector<double> region_max;  ///< both empty: every particle of the phase
+  std::string load;                ///< load_velocity: label of the [[soil.loads]] entry
+  std::string wall;                ///< wall_force: label of the moving wall
 };
 
 struct Scene {

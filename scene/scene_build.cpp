@@ -41,6 +41,12 @@ Shape shape_of(const toml::table& table) {
   shape.phases = strings_of(table.get("phases"));
   shape.condition = table["condition"].value<std::string>().value_or(shape.condition);
   shape.material = text_of(table, "material");
+  shape.moves_with = text_of(table, "moves_with");
+  shape.move_direction = vector_of(table.get("move_direction"));
+  double norm = 0.0;
+  for (double c : shape.move_direction) norm += c * c;
+  if (norm > 0.0)
+    for (double& c : shape.move_direction) c /= std::sqrt(norm);
   return shape;
 }
 
@@ -125,6 +131,8 @@ Scene build_scene(const toml::table& root) {
       o.origin = vector_of(table.get("origin"));
       o.point = vector_of(table.get("point"));
       o.field = text_of(table, "field");
+      o.load = text_of(table, "load");
+      o.wall = text_of(table, "wall");
       o.region_min = vector_of(table.get("region_min"));
       o.region_max = vector_of(table.get("region_max"));
       scene.observables.push_back(std::move(o));

@@ -34,6 +34,97 @@ void check_wall_phases(const toml::table& root, const toml::table& wall, const s
   }
 }
 
+/// The names of the scene's observables.
+std::vector<std::string> observable_names(const toml::table& root) {
+  std::vector<std::string> names;
+  if (const toml::array* observables = root.get_as<toml::array>("observables"))
+    for (const auto& o : *observables) names.push_back(text_of(*o.as_table(), "name"));
+  return names;
+}
+
+/// A moving wall (moves_with): it names an observable, has a non-zero move_direction of the
+/// scene's dimension and acts on water only.
+void check_wall_motion(const toml::table& root, const toml::table& wall, const std::string& key,
+                       int dimension, const ErrorContext& errors) {
+  const std::string follows = text_of(wall, "moves_with");
+  const toml::node* direction = wall.get("move_direction");
+  if (follows.empty()) {
+    if (direction) errors.fail(direction, key + ".move_direction", "given without moves_with");
+    return;
+  }
+  const std::vector<std::string> names = observable_names(root);
+  if (std::find(names.begin(), names.end(), follows) == names.end())
+    errors.fail(wall.get("moves_with"), key + ".moves_with",
+                "no observable named '" + follows + "'" + did_you_mean(follows, names));
+  if (!direction) {
+    errors.fail(wall.get("moves_with"), key + ".move_direction",
+                "required with moves_with (the direction the wall moves along)");
+  } else {
+    const auto d = vector_of(direction);
+    if (static_cast<int>(d.size()) != dimension)
+      errors.fail(
+          direction, key + ".move_direction",
+          "expected " + std::to_string(dimension) + " components, got " + std::to_string(d.size()));
+    else if (std::all_of(d.begin(), d.end(), [](double c) { return c == 0.0; }))
+      errors.fail(direction, key + ".move_direction", "must not be the zero vector");
+  }
+  const toml::array& phases = *wall.get_as<toml::array>("phases");
+  if (phases.size() != 1 || phases.get(0)->value<std::string>().value_or("") != "water")
+    errors.fail(wall.get("moves_with"), key + ".moves_with",
+                "a moving wall acts on water only: give phases = [\"water\"]");
+}
+
+/// The wall a wall_force observable names is a moving wall; the observable measures the water.
+void check_wall_force(const toml::table& root, const toml::table& observable,
+                      const std::string& key, const ErrorContext& errors) {
+  const toml::node* node = observable.get("wall");
+  if (!node) return;
+  const std::string wall = node->value<std::string>().value_or("");
+  std::vector<std::string> moving;
+  if (const toml::array* walls = root.get_as<toml::array>("walls"))
+    for (const auto& w : *walls)
+      if (!text_of(*w.as_table(), "moves_with").empty())
+        moving.push_back(text_of(*w.as_table(), "label"));
+  if (std::find(moving.begin(), moving.end(), wall) == moving.end())
+    errors.fail(node, key + ".wall",
+                "no moving wall (moves_with) labelled '" + wall + "'" + did_you_mean(wall, moving));
+  if (text_of(observable, "phase") != "water")
+    errors.fail(observable.get("phase"), key + ".phase",
+                "a wall_force observable measures the water: phase must be 'water'");
+}
+
+/// Each [[soil.loads]] plus_force_from names an observable.
+void check_load_forces(const toml::table& root, const ErrorContext& errors) {
+  const toml::array* loads = root["soil"]["loads"].as_array();
+  if (!loads) return;
+  const std::vector<std::string> names = observable_names(root);
+  for (std::size_t i = 0; i < loads->size(); ++i) {
+    const toml::table& load = *loads->get(i)->as_table();
+    const std::string from = text_of(load, "plus_force_from");
+    if (!from.empty() && std::find(names.begin(), names.end(), from) == names.end())
+      errors.fail(load.get("plus_force_from"),
+                  "soil.loads[" + std::to_string(i) + "].plus_force_from",
+                  "no observable named '" + from + "'" + did_you_mean(from, names));
+  }
+}
+
+/// The load a load_velocity observable names is a [[soil.loads]] label.
+void check_load(const toml::table& root, const toml::table& observable, const std::string& key,
+                const ErrorContext& errors) {
+  const toml::node* node = observable.get("load");
+  if (!node) return;
+  const std::string load = node->value<std::string>().value_or("");
+  std::vector<std::string> labels;
+  if (const toml::array* loads = root["soil"]["loads"].as_array())
+    for (const auto& l : *loads) labels.push_back(text_of(*l.as_table(), "label"));
+  if (std::find(labels.begin(), labels.end(), load) == labels.end())
+    errors.fail(node, key + ".load",
+                "no [[soil.loads]] entry with label '" + load + "'" + did_you_mean(load, labels));
+  if (text_of(observable, "phase") != "soil")
+    errors.fail(observable.get("phase"), key + ".phase",
+                "a load_velocity observable measures the soil: phase must be 'soil'");
+}
+
 /// The field exists on the observable's phase and in its dimension.
 void check_field(const toml::table& observable, const std::string& key, int dimension,
                  const ErrorContext& errors) {
@@ -93,6 +184,8 @@ void check_observables(const toml::table& root, int dimension, const ShapeChecke
     }
     check_field(observable, key, dimension, errors);
     check_region(observable, key, shapes, errors);
+    check_load(root, observable, key, errors);
+    check_wall_force(root, observable, key, errors);
   }
 }
 
@@ -191,8 +284,10 @@ void check_scene_consistency(const toml::table& root, int dimension, const Error
       const std::string key = "walls[" + std::to_string(i) + "]";
       shapes.check(*walls->get(i)->as_table(), key, false);
       check_wall_phases(root, *walls->get(i)->as_table(), key, errors);
+      check_wall_motion(root, *walls->get(i)->as_table(), key, dimension, errors);
     }
   check_observables(root, dimension, shapes, errors);
+  check_load_forces(root, errors);
 }
 
 }  // namespace porosph::scene

@@ -104,9 +104,10 @@ void check_soil_consistency(const toml::table& soil, const ShapeChecker& shapes,
                             const ErrorContext& errors);
 /// The typed soil phase from a validated, default-filled [soil] table.
 SoilPhase build_soil_phase(const toml::table& soil);
-/// Relations inside [[soil.loads]] (scene_soil_loads.cpp): min < max, traction along one axis.
-void check_soil_loads(const toml::table& soil, const ShapeChecker& shapes,
-                      const ErrorContext& errors);
+/// Relations inside [[soil.loads]] (scene_soil_loads.cpp): min < max, traction along one axis,
+/// `material` one of `materials` (the names of [[soil.materials]]).
+void check_soil_loads(const toml::table& soil, const std::vector<std::string>& materials,
+                      const ShapeChecker& shapes, const ErrorContext& errors);
 /// Fills p.loads from a validated [soil] table.
 void build_soil_loads(const toml::table& soil, SoilPhase& p);
 

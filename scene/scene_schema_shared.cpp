@@ -60,6 +60,17 @@ void add_walls(SceneSchema& s) {
                        .one_of({"default", "no_slip", "free_slip"})
                        .doc("Velocity condition at this wall; default: the `wall_condition` of "
                             "each phase it acts on."));
+  s.keys.push_back(Key("walls[].moves_with", T::String)
+                       .fallback("\"\"")
+                       .doc("Name of an observable whose value, at the latest state, is this "
+                            "wall's speed along move_direction [m/s]: the wall moves as one body "
+                            "(e.g. the lid that keeps the pore water under a rigid plate, an "
+                            "observable of kind load_velocity). Water walls only (phases = "
+                            "[\"water\"]). Empty: the wall is fixed."));
+  s.keys.push_back(Key("walls[].move_direction", T::Vector)
+                       .optional()
+                       .doc("Direction the wall moves along (normalised by the loader); "
+                            "required with moves_with, non-zero."));
 }
 
 void add_observables(SceneSchema& s) {
@@ -74,20 +85,24 @@ void add_observables(SceneSchema& s) {
       Key("observables[].kind", T::String)
           .required()
           .one_of({"front_position", "max_speed", "pressure_at", "kinetic_energy", "max_height",
-                   "particle_count", "mean_field", "max_displacement"})
+                   "particle_count", "mean_field", "max_displacement", "load_velocity",
+                   "wall_force"})
           .doc("What is measured over the phase's particles (those inside the region, if one is "
                "given): front_position and max_height, the largest dot(x - origin, direction); "
                "max_speed, the largest speed; pressure_at, the pressure interpolated at point; "
                "kinetic_energy, the total kinetic energy; particle_count, the number of "
                "particles; mean_field, the arithmetic mean of `field`; max_displacement, the "
-               "largest distance of a particle from its position at t = 0."));
+               "largest distance of a particle from its position at t = 0; load_velocity, the "
+               "mean velocity of a soil load's particles along its traction (the speed of a "
+               "rigid plate; NaN from a soil solver without loads); wall_force, the force the "
+               "water's pressure puts on a moving wall, along `direction` [N/m in 2D]."));
   s.keys.push_back(Key("observables[].phase", T::String)
                        .derived("`\"water\"` if the scene has water, else `\"soil\"`")
                        .one_of({"water", "soil"})
                        .doc("Phase measured; must be present in the scene."));
   s.keys.push_back(Key("observables[].direction", T::Vector)
                        .required()
-                       .only_when("kind", {"front_position", "max_height"})
+                       .only_when("kind", {"front_position", "max_height", "wall_force"})
                        .doc("Direction of measurement; non-zero, normalised by the loader."));
   s.keys.push_back(Key("observables[].origin", T::Vector)
                        .unit("m")
@@ -108,6 +123,14 @@ void add_observables(SceneSchema& s) {
           .only_when("kind", {"mean_field"})
           .doc("Particle field averaged. pressure: water only; porosity and stress_* (Pa, "
                "tension positive): soil only; velocity_z: 3D only."));
+  s.keys.push_back(Key("observables[].load", T::String)
+                       .required()
+                       .only_when("kind", {"load_velocity"})
+                       .doc("Label of the [[soil.loads]] entry measured."));
+  s.keys.push_back(Key("observables[].wall", T::String)
+                       .required()
+                       .only_when("kind", {"wall_force"})
+                       .doc("Label of the moving wall (walls[].moves_with) measured."));
   const std::vector<std::string> regional = {"front_position",  "max_speed",      "kinetic_energy",
                                              "max_height",      "particle_count", "mean_field",
                                              "max_displacement"};

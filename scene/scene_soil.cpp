@@ -132,7 +132,7 @@ void check_soil_consistency(const toml::table& soil, const ShapeChecker& shapes,
                   "unknown material '" + material + "'" + did_you_mean(material, names) +
                       "; known materials: " + comma_list(names));
   }
-  check_soil_loads(soil, shapes, errors);
+  check_soil_loads(soil, names, shapes, errors);
 }
 
 SoilPhase build_soil_phase(const toml::table& soil) {

@@ -1,6 +1,8 @@
 // Surface loads on the soil ([[soil.loads]]): a traction carried by the soil particles of a region
 // (a surcharge, a footing, the piston of an oedometer): its schema, the relations between its keys
 // and its typed form.
+#include <algorithm>
+
 #include "scene/scene_internal.h"
 #include "scene/scene_schema_builder.h"
 
@@ -33,6 +35,24 @@ void add_soil_loads(SceneSchema& s) {
                        .at_least(0)
                        .doc("The load grows linearly from 0 to the traction over this time; 0: "
                             "a step."));
+  s.keys.push_back(Key("soil.loads[].rigid", T::Bool)
+                       .fallback("false")
+                       .doc("The loaded particles move as one along the traction's axis, free "
+                            "across it: a rigid, frictionless plate (Mandel's problem). After "
+                            "every kick their velocities along the axis are set to their "
+                            "mass-weighted mean (internal forces: momentum is unchanged)."));
+  s.keys.push_back(Key("soil.loads[].material", T::String)
+                       .fallback("\"\"")
+                       .doc("Material the loaded particles take from t = 0, which must have the "
+                            "density and porosity of their own (checked at start-up); e.g. an "
+                            "impermeable one, so that the pore water cannot leave through the "
+                            "plate. Empty: they keep their own."));
+  s.keys.push_back(Key("soil.loads[].plus_force_from", T::String)
+                       .fallback("\"\"")
+                       .doc("Name of an observable whose latest value [N/m in 2D] is added to "
+                            "the load's force along the positive direction of its traction's "
+                            "axis: the wall_force of the lid that moves with a rigid plate, so "
+                            "that lid and plate carry the load as one body. Empty: none."));
   s.keys.push_back(Key("soil.loads[].label", T::String)
                        .fallback("\"\"")
                        .doc("Optional name shown in errors and output."));
@@ -40,8 +60,8 @@ void add_soil_loads(SceneSchema& s) {
 
 }  // namespace schema_detail
 
-void check_soil_loads(const toml::table& soil, const ShapeChecker& shapes,
-                      const ErrorContext& errors) {
+void check_soil_loads(const toml::table& soil, const std::vector<std::string>& materials,
+                      const ShapeChecker& shapes, const ErrorContext& errors) {
   const toml::array* loads = soil.get_as<toml::array>("loads");
   if (!loads) return;
   for (std::size_t i = 0; i < loads->size(); ++i) {
@@ -53,6 +73,11 @@ void check_soil_loads(const toml::table& soil, const ShapeChecker& shapes,
     if (nonzero != 1)
       errors.fail(load.get("traction"), key + ".traction",
                   "must act along one axis and not vanish, e.g. [0.0, -1000.0]");
+    const std::string material = text_of(load, "material");
+    if (!material.empty() &&
+        std::find(materials.begin(), materials.end(), material) == materials.end())
+      errors.fail(load.get("material"), key + ".material",
+                  "unknown material '" + material + "'" + did_you_mean(material, materials));
   }
 }
 
@@ -68,6 +93,9 @@ void build_soil_loads(const toml::table& soil, SoilPhase& p) {
     load.start_time = *t["start_time"].value<double>();
     load.ramp_time = *t["ramp_time"].value<double>();
     load.label = text_of(t, "label");
+    load.rigid = *t["rigid"].value<bool>();
+    load.material = text_of(t, "material");
+    load.plus_force_from = text_of(t, "plus_force_from");
     p.loads.push_back(std::move(load));
   }
 }

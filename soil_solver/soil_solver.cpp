@@ -33,7 +33,7 @@ SoilSolver<D>::SoilSolver(const scene::Scene& s)
                                                    s.run.kernel_gradient != "plain")),
       wendland_(sph::make_kernel<sph::WendlandC2<D>>(params_.h, s.run.dp,
                                                      s.run.kernel_gradient != "plain")),
-      loads_(s.soil->loads) {
+      loads_(*s.soil) {
   using Vec = sph::Vec<D>;
   if (s.run.kernel == "cubic_spline") {
     kernel_kind_ = KernelKind::CubicSpline;
@@ -120,7 +120,7 @@ SoilSolver<D>::SoilSolver(const scene::Scene& s)
   }
   if (s.water) mark_initially_submerged<D>(s.water->blocks, params_, P);
   if (params_.geostatic_initial) apply_geostatic_stress<D>(params_, P);
-  loads_.tag(P, params_.dp);
+  loads_.tag(P, params_.dp, params_.materials);
   neighbours_.set_skin(sph::kSolverSkinFraction * 2.0 * params_.h);
   reorder_by_cell();
 }
@@ -198,6 +198,8 @@ void SoilSolver<D>::compute_rates_with(const Kernel& kernel) {
 template <int D>
 double SoilSolver<D>::evaluate(const sph::PreparedObservable<D>& o,
                                const sph::ParticleView<D>& view) const {
+  if (o.kind == sph::PreparedObservable<D>::Kind::LoadVelocity)
+    return loads_.velocity(o.load, particles_);
   if (kernel_kind_ == KernelKind::CubicSpline) return sph::evaluate_observable(o, view, cubic_);
   return sph::evaluate_observable(o, view, wendland_);
 }
@@ -305,6 +307,7 @@ void SoilSolver<D>::advance(double dt) {
     // The interaction already holds the coupler's pairwise implicit drag over dt: explicit here.
     P.velocity[i] += dt * a;
   }
+  loads_.make_rigid(P);  // rigid plates move as one along their axis (surface_loads.h)
   // Strain rate, spin and drho/dt from the new velocities at the old positions (the neighbour
   // list of this step is still exact), then the stress update.
   if (kernel_kind_ == KernelKind::CubicSpline) {

@@ -63,6 +63,9 @@ class SoilSolver {
   /// stress scaled back onto the cohesionless surface at the next update). Particles outside the
   /// overlap set are dry.
   void set_saturation(const std::vector<double>& saturation);
+  /// The forces added to the surface loads for the next rates (StepCommand.load_force; empty:
+  /// none; surface_loads.h). Throws std::invalid_argument on a size mismatch.
+  void set_load_forces(const std::vector<double>& forces) { loads_.set_extra_forces(forces); }
   /// One step (see above), periodic wrap, removal of particles leaving the domain and of walls
   /// whose time has come; time += dt; ++step.
   void advance(double dt);

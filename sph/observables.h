@@ -33,7 +33,9 @@ struct PreparedObservable {
     ParticleCount,
     PressureAt,
     MeanField,
-    MaxDisplacement
+    MaxDisplacement,
+    LoadVelocity,
+    WallForce
   };
   using Field = ParticleField;
   std::string name;
@@ -41,6 +43,8 @@ struct PreparedObservable {
   Vec<D> origin = Vec<D>::Zero(), direction = Vec<D>::Zero(), point = Vec<D>::Zero();
   Field field = Field::Density;  ///< MeanField only
   Region<D> region;              ///< every kind but PressureAt; has_region = false: all particles
+  std::string load;              ///< LoadVelocity only: the soil load's label
+  std::string wall;              ///< WallForce only: the moving wall's label
 };
 
 /// The ParticleField named `name` (observables[].field); throws std::invalid_argument naming
@@ -94,6 +98,13 @@ PreparedObservable<D> prepare_observable(const scene::Observable& o) {
     p.field = parse_particle_field(o.field, what);
   } else if (o.kind == "max_displacement") {
     p.kind = Kind::MaxDisplacement;
+  } else if (o.kind == "wall_force") {
+    p.kind = Kind::WallForce;  // the water solver's own (moving_walls.h); NaN here
+    p.direction = to_vec<D>(o.direction, what + " direction");
+    p.wall = o.wall;
+  } else if (o.kind == "load_velocity") {
+    p.kind = Kind::LoadVelocity;  // the soil solver's own (surface_loads.h); NaN here
+    p.load = o.load;
   } else {
     throw std::invalid_argument(what + ": unknown kind '" + o.kind + "'");
   }
@@ -138,6 +149,9 @@ double evaluate_observable(const PreparedObservable<D>& o, const ParticleView<D>
       return mean_field(p, o.field, o.region);
     case Kind::MaxDisplacement:
       return max_displacement(p, o.region);
+    case Kind::LoadVelocity:  // needs the loads: a solver that has them evaluates it itself
+    case Kind::WallForce:     // needs the wall pairs: the water solver evaluates it itself
+      break;
   }
   return std::numeric_limits<double>::quiet_NaN();
 }

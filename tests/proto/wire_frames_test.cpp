@@ -52,6 +52,8 @@ coupling::StepCommand sample_command() {
   c.interaction_rate = {10, 20};
   c.saturation = {0.5, 1.0};
   c.porosity = {0.4, 1.0};
+  c.wall_speed = {0.0, -1e-3, 0.0};
+  c.load_force = {42.5};
   c.other_region_min = {0, 0};
   c.other_region_max = {1, 1};
   c.write_checkpoint = true;
@@ -160,6 +162,8 @@ TEST(WireFrames, CommandFramesAreTheGeneratedBytesAndReadBack) {
     EXPECT_EQ(out.interaction_rate, c.interaction_rate);
     EXPECT_EQ(out.saturation, c.saturation);
     EXPECT_EQ(out.porosity, c.porosity);
+    EXPECT_EQ(out.wall_speed, c.wall_speed);
+    EXPECT_EQ(out.load_force, c.load_force);
     EXPECT_EQ(out.other_region_min, c.other_region_min);
     EXPECT_EQ(out.other_region_max, c.other_region_max);
     EXPECT_EQ(out.write_checkpoint, c.write_checkpoint);

@@ -11,6 +11,7 @@
 //   porosph_validate rockfill_overtopping RUN_DIR [--series FILE]   (also FILE_dupuit.csv)
 //   porosph_validate hydraulic_heave RUN_DIR [--series FILE]
 //   porosph_validate consolidation RUN_DIR [--series FILE]   (also FILE_isochrones.csv)
+//   porosph_validate mandel RUN_DIR [--series FILE]
 //   porosph_validate taylor_green RUN_DIR
 //   porosph_validate elastic_column RUN_DIR
 // Exit code 0 when the target is met, 1 when not, 2 on unreadable input.
@@ -22,6 +23,7 @@
 #include "tools/validation/consolidation_report.h"
 #include "tools/validation/dam_case_checks.h"
 #include "tools/validation/fluidized_bed_check.h"
+#include "tools/validation/mandel_check.h"
 #include "tools/validation/seepage_checks.h"
 #include "tools/validation/soil_checks.h"
 #include "tools/validation/verification_report.h"
@@ -280,8 +282,14 @@ int main(int argc, char** argv) {
       app.add_subcommand("consolidation", "Terzaghi: U(T_v), isochrones, B, final settlement");
   consolidation->add_option("run_dir", run_dir)->required();
   consolidation->add_option("--series", series, "write U(T_v) and the isochrones as CSV");
+  auto* mandel = app.add_subcommand("mandel", "Mandel: the centre's pore pressure peak, profiles");
+  mandel->add_option("run_dir", run_dir)->required();
+  mandel->add_option("--series", series, "write the centre pressure and plate vs time as CSV");
   CLI11_PARSE(app, argc, argv);
   try {
+    if (*mandel) {
+      return porosph::validation::report_mandel(porosph::validation::check_mandel(run_dir), series);
+    }
     if (*consolidation) {
       return porosph::validation::report_consolidation(
           porosph::validation::check_consolidation(run_dir), series);
