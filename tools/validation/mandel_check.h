@@ -29,8 +29,8 @@ struct MandelCheck {
   double undrained_period = 0;  ///< 4 b / sqrt((K + 4 G / 3 + K_w) / rho_sat) [s]
   std::vector<MandelSample> samples;
   std::vector<MandelProfile> profiles;  ///< at c t / a^2 = 0.01, 0.05, 0.1, 0.2
-  // The centre's peak (both series smoothed over one undrained period; vertex of the parabola
-  // through the points within 1 % of the largest).
+  // The centre's peak: the vertex of the least-squares parabola through the outputs where the
+  // closed form is within 2 % of its largest value, for both series.
   double peak = 0, peak_closed = 0;            ///< [p0]
   double peak_time = 0, peak_time_closed = 0;  ///< since the load started [s]
   double peak_error = 0, peak_time_error = 0;  ///< relative
