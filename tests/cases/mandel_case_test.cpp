@@ -3,7 +3,7 @@
 // (walls[].moves_with) and carries the water's push back to it (plus_force_from); the closed form
 // itself (tools/validation/mandel.h) against its limits and an independent implementation. The
 // full targets (docs/verification.md) are met at the finest level of the resolution series; this
-// test runs the coarsest one (dp = 0.01 m, 10 x 10 soil particles, ~5 s) with bounds set from its
+// test runs the coarsest one (dp = 0.01 m, 20 x 10 soil particles, ~10 s) with bounds set from its
 // measured errors plus a margin, tight enough that a broken piece fails: with a lid that stays put
 // the centre carries 0.46 p0 at most, without the lid's force on the plate 2.35 p0.
 #include <gtest/gtest.h>
@@ -60,14 +60,17 @@ TEST(MandelCase, CoarseSampleShowsTheMandelCryerRiseAndFall) {
   const auto m = validation::check_mandel(run.out);
   EXPECT_NEAR(m.p0, 474.68, 0.01);
   ASSERT_GE(m.samples.size(), 140u);
-  // Measured at dp = 0.01 m (2026-12-05): the first share -1.0 %, the centre's peak 1.254 p0
-  // (+12.2 %) at 0.186 s (-3.7 %), profiles within 0.105 / 0.142 / 0.135 / 0.126 p0, the plate
-  // +7.0 % at the end. Bounds about 1.5 x those (the targets are met at dp 2.5 mm).
-  EXPECT_LE(std::abs(m.initial_error), 0.03);
-  EXPECT_LE(std::abs(m.peak_error), 0.18);
-  EXPECT_LE(std::abs(m.peak_time_error), 0.1);
-  for (const auto& p : m.profiles) EXPECT_LE(p.max_error, 0.2) << "T " << p.time_factor;
-  EXPECT_LE(std::abs(m.final_plate_error), 0.11);
+  // Measured at dp = 0.01 m (2026-12-05, the whole width): the first share -5.7 %, the centre's
+  // peak 1.100 p0 (-1.5 %) at 0.187 s (-2.9 %), profiles after the ramp within 0.081 / 0.059 /
+  // 0.045 / 0.046 p0, the plate +6.7 % at the end. Bounds about 1.5 x those (the targets
+  // are met at dp 5 and 2.5 mm).
+  EXPECT_LE(std::abs(m.initial_error), 0.085);
+  EXPECT_LE(std::abs(m.peak_error), 0.03);
+  EXPECT_LE(std::abs(m.peak_time_error), 0.05);
+  ASSERT_EQ(m.profiles.size(), 5u);
+  for (const auto& p : m.profiles)
+    if (p.judged) EXPECT_LE(p.max_error, 0.12) << "T " << p.time_factor;
+  EXPECT_LE(std::abs(m.final_plate_error), 0.1);
   // Non-monotonic: the centre rises above its first share, then falls well below its peak.
   EXPECT_GT(m.peak, 1.05 * m.initial);
   EXPECT_LT(m.samples.back().centre, m.peak - 0.15);

@@ -17,11 +17,11 @@ namespace {
 
 constexpr double kStandardGravity = 9.80665;  // the coupler's gamma_w without gravity
 
-/// Mean pressure of the water per column [x0 + k dp, x0 + (k + 1) dp) inside the sample, below
-/// `y_max` (NaN for an empty column).
+/// Mean pressure of the water per column k dp <= |x| < (k + 1) dp inside the sample (x = 0 its
+/// centre plane: a whole sample's two halves fold onto each other), below `y_max` (NaN for an
+/// empty column).
 std::vector<double> column_pressures(const io::SnapshotReader& water, std::uint32_t index,
-                                     double x0, double dp, std::size_t columns, double y0,
-                                     double y_max) {
+                                     double dp, std::size_t columns, double y0, double y_max) {
   const auto position = water.read_f64(index, "position");
   const auto fixed = water.read_u8(index, "fixed");
   const auto pressure = water.read_f64(index, "pressure");
@@ -29,7 +29,7 @@ std::vector<double> column_pressures(const io::SnapshotReader& water, std::uint3
   for (std::size_t i = 0; i < position.rows; ++i) {
     if (fixed.values[i]) continue;
     const double x = position.values[i * position.cols], y = position.values[i * position.cols + 1];
-    const double k = std::floor((x - x0) / dp);
+    const double k = std::floor(std::abs(x) / dp);
     if (k < 0 || k >= static_cast<double>(columns) || y < y0 || y >= y_max) continue;
     sum[static_cast<std::size_t>(k)] += pressure.values[i];
     count[static_cast<std::size_t>(k)] += 1.0;
@@ -124,7 +124,12 @@ MandelCheck check_mandel(const std::string& run_dir) {
     y0 = std::min(y0, position0.values[2 * i + 1]), y1 = std::max(y1, position0.values[2 * i + 1]);
   }
   x0 -= 0.5 * out.dp, y0 -= 0.5 * out.dp;
-  out.a = x1 + 0.5 * out.dp - x0;
+  out.a = x1 + 0.5 * out.dp;
+  // The centre plane is x = 0: the sample is [0, a] (a quarter, a symmetry wall at x = 0) or
+  // [-a, a] (the whole width).
+  if (std::abs(x0) > 1e-6 * out.a && std::abs(x0 + out.a) > 1e-6 * out.a)
+    throw std::runtime_error(run_dir + ": the sample must span [0, a] or [-a, a] along x, not [" +
+                             std::to_string(x0) + ", " + std::to_string(out.a) + "]");
   out.b = y1 + 0.5 * out.dp - y0;
   std::map<std::int64_t, int> plate;
   for (std::size_t i = 0; i < position0.rows; ++i)
@@ -149,7 +154,7 @@ MandelCheck check_mandel(const std::string& run_dir) {
     const double t = snapshots[s].time - out.load_time;
     if (t <= 0.0) continue;
     std::vector<double> p =
-        column_pressures(water_h5, water_snapshots[s].index, x0, out.dp, columns, y0, below_plate);
+        column_pressures(water_h5, water_snapshots[s].index, out.dp, columns, y0, below_plate);
     for (double& v : p) v /= out.p0;
     const auto disp = soil_h5.read_f64(snapshots[s].index, "displacement");
     const auto ids = soil_h5.read_i64(snapshots[s].index, "id");
@@ -203,7 +208,7 @@ MandelCheck check_mandel(const std::string& run_dir) {
   }
   out.initial = measured / expected;  // same number of outputs in both sums
   out.initial_error = out.initial - 1.0;
-  for (const double target : {0.01, 0.05, 0.1, 0.2}) {
+  for (const double target : {0.01, 0.05, 0.1, 0.2, 0.3}) {
     std::size_t nearest = 0;
     for (std::size_t i = 0; i < times.size(); ++i)
       if (std::abs(out.samples[i].time_factor - target) <
@@ -212,6 +217,7 @@ MandelCheck check_mandel(const std::string& run_dir) {
     if (std::abs(out.samples[nearest].time_factor - target) > 0.2 * target) continue;
     MandelProfile pr;
     pr.time_factor = out.samples[nearest].time_factor;
+    pr.judged = times[nearest] > out.ramp_time + out.undrained_period;
     pr.measured.assign(columns, 0.0);
     pr.closed.assign(columns, 0.0);
     const auto w = window(times[nearest]);
@@ -230,7 +236,7 @@ MandelCheck check_mandel(const std::string& run_dir) {
   const MandelSample& last = out.samples.back();
   out.final_plate_error = last.plate / last.plate_closed - 1.0;
   out.met = std::abs(out.peak_error) <= 0.05 && std::abs(out.peak_time_error) <= 0.05;
-  for (const auto& pr : out.profiles) out.met = out.met && pr.max_error <= 0.05;
+  for (const auto& pr : out.profiles) out.met = out.met && (!pr.judged || pr.max_error <= 0.05);
   return out;
 }
 
@@ -262,7 +268,12 @@ int report_mandel(const MandelCheck& m, const std::string& series) {
     char what[80];
     std::snprintf(what, sizeof what, "profile at c t / a^2 = %.3f, max |error| [p0]",
                   pr.time_factor);
-    summary(what, pr.max_error, "same", pr.max_error, "0.05", pr.max_error <= 0.05);
+    if (pr.judged) {
+      summary(what, pr.max_error, "same", pr.max_error, "0.05", pr.max_error <= 0.05);
+    } else {
+      std::printf("%s: %.4g (during the ramp and its ringing: reported, not judged)\n", what,
+                  pr.max_error);
+    }
   }
   std::printf(
       "first share: %.4f of the closed form (%+.2f %%), peak %.4f at %.4f s (closed "

@@ -21,6 +21,9 @@ struct MandelProfile {
   double time_factor = 0;
   std::vector<double> x, measured, closed;
   double max_error = 0;  ///< [p0]
+  /// Whether the target applies: not while the load is still ramped up, nor in the undrained
+  /// period after it (the sample rings there, which the quasi-static closed form does not).
+  bool judged = true;
 };
 
 struct MandelCheck {
@@ -28,7 +31,7 @@ struct MandelCheck {
   double nu = 0, nu_u = 0, skempton = 0, c = 0, p0 = 0;
   double undrained_period = 0;  ///< 4 b / sqrt((K + 4 G / 3 + K_w) / rho_sat) [s]
   std::vector<MandelSample> samples;
-  std::vector<MandelProfile> profiles;  ///< at c t / a^2 = 0.01, 0.05, 0.1, 0.2
+  std::vector<MandelProfile> profiles;  ///< at c t / a^2 = 0.01, 0.05, 0.1, 0.2, 0.3
   // The centre's peak: the vertex of the least-squares parabola through the outputs where the
   // closed form is within 2 % of its largest value, for both series.
   double peak = 0, peak_closed = 0;            ///< [p0]
@@ -37,7 +40,7 @@ struct MandelCheck {
   double initial = 0, initial_error = 0;       ///< the sample's mean pressure over one undrained
                                                ///< period after the ramp / its closed form, - 1
   double final_plate_error = 0;                ///< relative, at the end of the run
-  bool met = false;  ///< peak and its time within 5 %, profiles within 0.05 p0
+  bool met = false;  ///< peak and its time within 5 %, the judged profiles within 0.05 p0
 };
 
 /// Reads run.json (the sample's material, the water, the first load: the plate), soil.h5 (the
