@@ -45,13 +45,14 @@ TEST(ConsolidationCase, CoarseColumnFollowsTerzaghi) {
   EXPECT_NEAR(c.b_model, 0.9091, 1e-4);
   EXPECT_NEAR(c.c_v, 0.046335, 1e-5);
   ASSERT_GE(c.samples.size(), 300u);
-  // Measured at dp = 0.01 m (2026-12-04, lattice-normalised gradient): U 0.041, isochrones
-  // 0.019 / 0.031 / 0.047 p0, B -1.5 %, settlement +0.9 % (plain kernel: U 0.059, settlement
-  // +3.4 %, docs/verification.md). Bounds about 1.5x those, the targets where tighter.
-  EXPECT_LE(c.max_degree_error, 0.06);
-  for (const auto& iso : c.isochrones) EXPECT_LE(iso.max_error, 0.07) << "T_v " << iso.time_factor;
-  EXPECT_LE(std::abs(c.b_error), 0.03);
-  EXPECT_LE(std::abs(c.settlement_error), 0.02);
+  // Measured at dp = 0.01 m (2026-12-05): U 0.0140, isochrones 0.0075 / 0.0058 / 0.0037 p0,
+  // B -0.53 %, settlement +0.73 % (with the code of 2026-12-04:
+  // U 0.041, isochrones 0.019 / 0.031 / 0.047 p0; docs/verification.md). Bounds about 1.5x the
+  // new figures: a return to the old ones fails.
+  EXPECT_LE(c.max_degree_error, 0.021);
+  for (const auto& iso : c.isochrones) EXPECT_LE(iso.max_error, 0.012) << "T_v " << iso.time_factor;
+  EXPECT_LE(std::abs(c.b_error), 0.01);
+  EXPECT_LE(std::abs(c.settlement_error), 0.011);
 }
 
 }  // namespace
