@@ -12,6 +12,7 @@
 
 #include "coupler/coupled_step_clock.h"
 #include "coupler/interaction/overlap_region.h"
+#include "coupler/observable_feedback.h"
 #include "proto/state_delta.h"
 #include "scene/timeseries_columns.h"
 
@@ -231,8 +232,8 @@ void CoupledStepLoop::send_commands(double dt, bool write_output, std::uint32_t 
     command.interaction_rate.clear();
     command.saturation.clear();
     command.porosity.clear();
-    fill_wall_speeds(command.wall_speed);
-    fill_load_forces(command.load_force);
+    wall_speeds_from(scene_, record_.observables, command.wall_speed);  // observable_feedback.h
+    load_forces_from(scene_, record_.observables, command.load_force);
     command.other_region_min.clear();
     command.other_region_max.clear();
     if (interaction_) {
@@ -248,36 +249,6 @@ void CoupledStepLoop::send_commands(double dt, bool write_output, std::uint32_t 
                          command.other_region_max);
     }
     hub_.send_command(phase, command);
-  }
-}
-
-void CoupledStepLoop::fill_wall_speeds(std::vector<double>& speeds) const {
-  speeds.clear();
-  const auto& walls = scene_.walls;
-  if (std::none_of(walls.begin(), walls.end(),
-                   [](const scene::Shape& w) { return !w.moves_with.empty(); }))
-    return;
-  speeds.assign(walls.size(), 0.0);
-  for (std::size_t i = 0; i < walls.size(); ++i) {
-    if (walls[i].moves_with.empty()) continue;
-    const auto it = record_.observables.find(walls[i].moves_with);
-    // An observable not measured (NaN: no particle left to measure) holds the wall still.
-    if (it != record_.observables.end() && std::isfinite(it->second)) speeds[i] = it->second;
-  }
-}
-
-void CoupledStepLoop::fill_load_forces(std::vector<double>& forces) const {
-  forces.clear();
-  if (!scene_.soil) return;
-  const auto& loads = scene_.soil->loads;
-  if (std::none_of(loads.begin(), loads.end(),
-                   [](const scene::SoilLoad& l) { return !l.plus_force_from.empty(); }))
-    return;
-  forces.assign(loads.size(), 0.0);
-  for (std::size_t i = 0; i < loads.size(); ++i) {
-    if (loads[i].plus_force_from.empty()) continue;
-    const auto it = record_.observables.find(loads[i].plus_force_from);
-    if (it != record_.observables.end() && std::isfinite(it->second)) forces[i] = it->second;
   }
 }
 

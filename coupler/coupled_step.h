@@ -54,12 +54,6 @@ class CoupledStepLoop {
   /// `state` keeps storage the next receive reuses.
   void absorb_state(const std::string& phase, coupling::StepState& state);
   void append_timeseries_row(double dt);
-  /// StepCommand.wall_speed: per scene wall, the latest value of the observable it moves with
-  /// (0 for a fixed wall, or while that value is NaN); empty when no wall moves.
-  void fill_wall_speeds(std::vector<double>& speeds) const;
-  /// StepCommand.load_force: per soil load, the latest value of its plus_force_from observable
-  /// (0 without one, or while it is NaN); empty when no load takes one.
-  void fill_load_forces(std::vector<double>& forces) const;
   void send_commands(double dt, bool write_output, std::uint32_t output_index, bool stop,
                      std::uint32_t checkpoint_index = 0);
   void wait_for_goodbyes();
