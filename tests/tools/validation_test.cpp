@@ -7,6 +7,7 @@
 #include "tools/validation/case_checks.h"
 #include "tools/validation/dam_case_checks.h"
 #include "tools/validation/run_directory.h"
+#include "tools/validation/soil_checks.h"
 
 namespace porosph::testing {
 namespace {
@@ -70,6 +71,30 @@ TEST(Validation, RockfillBIsMeasuredFromTheToeToTheMostUpstreamMovedSlopeParticl
   // Lowest free particle of material 0 with 0.4 <= x <= 1.4: the one now at (1.318, 0.176).
   EXPECT_NEAR(validation::lowest_in_band(s, 0, 0.4, 1.4), 0.176, 1e-12);
   EXPECT_TRUE(std::isnan(validation::lowest_in_band(s, 1, 0.0, 3.0)));
+}
+
+// The bulk front of a collapsed deposit: three rows (15 mm) up to x = 0.1 m, then single particles
+// on the floor out to 0.2 m, and a fixed particle far out. With dp 5 mm and a minimum thickness of
+// 10 mm the front is the far edge of the last thick column, 0.1 m; the single particles (5 mm
+// thick) count only when 5 mm is enough; the fixed one never.
+TEST(Validation, BulkFrontIgnoresSingleParticlesOnTheFloor) {
+  const double dp = 0.005;
+  std::vector<double> position;
+  std::vector<std::uint8_t> fixed;
+  for (int i = 0; i < 20; ++i)
+    for (int j = 0; j < 3; ++j) {
+      position.insert(position.end(), {(i + 0.5) * dp, (j + 0.5) * dp});
+      fixed.push_back(0);
+    }
+  for (double x : {0.12, 0.15, 0.1975}) {
+    position.insert(position.end(), {x, 0.5 * dp});
+    fixed.push_back(0);
+  }
+  position.insert(position.end(), {0.5, 0.5});
+  fixed.push_back(1);
+  EXPECT_NEAR(validation::bulk_front(position, fixed, 0.0, 0.0, dp, 0.01), 0.1, 1e-12);
+  EXPECT_NEAR(validation::bulk_front(position, fixed, 0.0, 0.0, dp, 0.005), 0.2, 1e-12);
+  EXPECT_EQ(validation::bulk_front(position, fixed, 0.0, 0.0, dp, 0.05), 0.0);
 }
 
 // The Dupuit-Forchheimer water table against the Darcy closed form (b = 0: H = sqrt(2 a q L)) and

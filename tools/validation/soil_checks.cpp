@@ -151,6 +151,21 @@ SoilColumnCheck check_soil_column(const std::string& run_dir) {
   return out;
 }
 
+double bulk_front(const std::vector<double>& position, const std::vector<std::uint8_t>& fixed,
+                  double x_wall, double y_base, double dp, double min_thickness) {
+  std::map<long, double> column_top;  // column index from the wall -> highest top
+  for (std::size_t i = 0; i < fixed.size(); ++i) {
+    if (fixed[i]) continue;
+    const long column = static_cast<long>(std::floor((position[i * 2] - x_wall) / dp));
+    const double top = position[i * 2 + 1] - y_base + 0.5 * dp;
+    auto [it, inserted] = column_top.emplace(column, top);
+    if (!inserted) it->second = std::max(it->second, top);
+  }
+  for (auto it = column_top.rbegin(); it != column_top.rend(); ++it)
+    if (it->second >= min_thickness) return static_cast<double>(it->first + 1) * dp;
+  return 0.0;
+}
+
 CollapseMeasurement measure_collapse(const std::string& run_dir) {
   const auto run = read_run_json(run_dir);
   const double dp = run.at("parameters").at("run").at("dp").get<double>();
@@ -179,6 +194,7 @@ CollapseMeasurement measure_collapse(const std::string& run_dir) {
       out.height_at_wall = std::max(out.height_at_wall, y - y_base + 0.5 * dp);
     out.max_speed = std::max(out.max_speed, speed_of(s, i));
   }
+  out.bulk_runout = bulk_front(s.position, s.fixed, x_wall, y_base, dp, 0.1 * out.initial_height);
   const double factors[3] = {0.5, 1.0, 2.0};
   for (int t = 0; t < 3; ++t) {
     const double threshold = factors[t] * dp;

@@ -2,6 +2,7 @@
 // against the weight of the soil above, and the observables of the granular column collapse.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -29,7 +30,11 @@ SoilColumnCheck check_soil_column(const std::string& run_dir);
 /// Final deposit of a collapsed column standing against a back wall at its initial minimum x.
 struct CollapseMeasurement {
   double time = 0;
-  double runout = 0;          ///< deposit front from the back wall: max (x - x_wall) + dp/2 [m]
+  double runout = 0;  ///< deposit front from the back wall: max (x - x_wall) + dp/2 [m]
+  /// Bulk front from the back wall [m]: the farthest column (width dp) whose deposit is at least
+  /// a tenth of the initial height thick (top + dp/2 above the base). Unlike the farthest
+  /// particle, which at fine dp is a single particle on the floor, it converges with dp.
+  double bulk_runout = 0;
   double height_at_wall = 0;  ///< top of the soil within 2 dp of the back wall, + dp/2 [m]
   double initial_height = 0, initial_width = 0;  ///< of the column at t = 0 [m]
   /// Angle [deg] of the failure surface: the boundary, in the initial configuration, between the
@@ -42,5 +47,11 @@ struct CollapseMeasurement {
 };
 
 CollapseMeasurement measure_collapse(const std::string& run_dir);
+
+/// The bulk front of a deposit [m from x_wall]: the far edge of the farthest column [x_wall + k dp,
+/// x_wall + (k + 1) dp) whose highest free particle top (y + dp/2 - y_base) reaches
+/// min_thickness; 0 when none does. `position` holds x, y pairs.
+double bulk_front(const std::vector<double>& position, const std::vector<std::uint8_t>& fixed,
+                  double x_wall, double y_base, double dp, double min_thickness);
 
 }  // namespace porosph::validation
