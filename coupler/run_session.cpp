@@ -16,6 +16,7 @@
 #include <sstream>
 #include <thread>
 
+#include "coupler/block_overlap.h"
 #include "coupler/checkpoint.h"
 #include "coupler/coupled_step.h"
 #include "coupler/progress_line.h"
@@ -108,6 +109,8 @@ void RunSession::load_fresh_run() {
   } catch (const scene::SceneError& e) {
     throw BadInput(std::string("bad scene: ") + e.what());
   }
+  if (const std::string overlap = block_overlap_problem(scene_); !overlap.empty())
+    throw BadInput("bad scene: " + overlap);
   record_.scene_name = scene_.name;
   record_.scene_path = options_.scene_path;
   record_.resolved_toml = scene_.resolved_toml;

@@ -1,5 +1,6 @@
 #include "coupler/scene_check.h"
 
+#include "coupler/block_overlap.h"
 #include "coupler/run_size.h"
 #include "scene/scene_loader.h"
 
@@ -24,6 +25,10 @@ int check_scene(const CheckOptions& options, std::ostream& out, std::ostream& er
     scene = scene::load_scene_file(options.scene_path, options.overrides);
   } catch (const scene::SceneError& e) {
     err << "coupler: bad scene: " << e.what() << "\n";
+    return 2;
+  }
+  if (const std::string overlap = block_overlap_problem(scene); !overlap.empty()) {
+    err << "coupler: bad scene: " << overlap << "\n";
     return 2;
   }
   const RunSizeEstimate size = estimate_run_size(scene);

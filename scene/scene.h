@@ -32,6 +32,7 @@ struct Shape {
   std::string condition = "default";  ///< wall only: "default" (the phase's wall_condition) |
                                       ///< "no_slip" | "free_slip"
   std::string material;               ///< soil block only: name of its SoilMaterial
+  int source_line = 0;  ///< line of its table in the scene file (0: unknown, e.g. built in code)
   /// Wall only: the observable whose value is the wall's speed along move_direction [m/s] (the
   /// wall moves as one body); empty: fixed.
   std::string moves_with;

@@ -26,6 +26,7 @@ std::string text_of(const toml::table& table, const std::string& name) {
 
 Shape shape_of(const toml::table& table) {
   Shape shape;
+  shape.source_line = static_cast<int>(table.source().begin.line);
   const std::string kind = text_of(table, "shape");
   shape.kind = kind == "polygon"     ? Shape::Kind::Polygon
                : kind == "container" ? Shape::Kind::Container

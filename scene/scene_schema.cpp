@@ -275,7 +275,9 @@ void add_water(SceneSchema& s) {
   s.tables.push_back({"water.blocks[]", true, true,
                       "Regions filled with water at t = 0 (needed when [water] exists). "
                       "Particles sit on a lattice of spacing dp, half a spacing inside the region. "
-                      "Every block must lie inside the domain."});
+                      "Every block must lie inside the domain. Blocks may touch but not overlap: "
+                      "`coupler check` and `run` refuse two blocks that share a lattice point "
+                      "(exit 2, both lines)."});
   add_filled_region_keys(s, "water.blocks[]");
   s.keys.push_back(Key("water.blocks[].label", T::String)
                        .fallback("\"\"")

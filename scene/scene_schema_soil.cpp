@@ -218,7 +218,9 @@ void add_soil_blocks(SceneSchema& s) {
   s.tables.push_back({"soil.blocks[]", true, true,
                       "Regions filled with soil at t = 0 (needed when [soil] exists), each of "
                       "one material. Particles sit on a lattice of spacing dp, half a spacing "
-                      "inside the region. Every block must lie inside the domain."});
+                      "inside the region. Every block must lie inside the domain. Blocks may touch "
+                      "but not overlap: `coupler check` and `run` refuse two blocks that share a "
+                      "lattice point (exit 2, both lines)."});
   add_filled_region_keys(s, "soil.blocks[]");
   s.keys.push_back(Key("soil.blocks[].material", T::String)
                        .required()
