@@ -16,7 +16,7 @@
 #include <sstream>
 #include <thread>
 
-#include "coupler/block_overlap.h"
+#include "coupler/block_lattice.h"
 #include "coupler/checkpoint.h"
 #include "coupler/coupled_step.h"
 #include "coupler/progress_line.h"
@@ -109,8 +109,6 @@ void RunSession::load_fresh_run() {
   } catch (const scene::SceneError& e) {
     throw BadInput(std::string("bad scene: ") + e.what());
   }
-  if (const std::string overlap = block_overlap_problem(scene_); !overlap.empty())
-    throw BadInput("bad scene: " + overlap);
   record_.scene_name = scene_.name;
   record_.scene_path = options_.scene_path;
   record_.resolved_toml = scene_.resolved_toml;
@@ -119,6 +117,8 @@ void RunSession::load_fresh_run() {
   record_.ledger = ConservationLedger(scene_.run.dimension);
   const std::string too_big = size_gate(scene_, options_.out_dir, options_.force_size);
   if (!too_big.empty()) throw BadInput("the run does not fit this machine: " + too_big);
+  if (const std::string overlap = block_lattice_problem(scene_); !overlap.empty())
+    throw BadInput("bad scene: " + overlap);
   prepare_output_dir();
 }
 

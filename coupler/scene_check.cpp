@@ -1,6 +1,6 @@
 #include "coupler/scene_check.h"
 
-#include "coupler/block_overlap.h"
+#include "coupler/block_lattice.h"
 #include "coupler/run_size.h"
 #include "scene/scene_loader.h"
 
@@ -27,15 +27,15 @@ int check_scene(const CheckOptions& options, std::ostream& out, std::ostream& er
     err << "coupler: bad scene: " << e.what() << "\n";
     return 2;
   }
-  if (const std::string overlap = block_overlap_problem(scene); !overlap.empty()) {
-    err << "coupler: bad scene: " << overlap << "\n";
-    return 2;
-  }
   const RunSizeEstimate size = estimate_run_size(scene);
   const std::string problem =
       run_size_problem(scene, size, machine_limits(run_dir_of(scene, options.out_dir)));
   if (!problem.empty() && !options.force_size) {
     err << "coupler: the run does not fit this machine: " << problem << "\n";
+    return 2;
+  }
+  if (const std::string overlap = block_lattice_problem(scene); !overlap.empty()) {
+    err << "coupler: bad scene: " << overlap << "\n";
     return 2;
   }
   if (!problem.empty()) err << "coupler: warning (--force-size): " << problem << "\n";

@@ -72,6 +72,12 @@ class SanityChecker {
       if (!std::isfinite(extent))
         fail("domain.max", std::string("the domain's extent along ") + axis_name(k) +
                                " overflows to " + format_number(extent));
+      const double support = 2.0 * scene_.h();  // both kernels vanish beyond 2 h
+      if (extent < support)
+        fail("run.dp",
+             "gives a kernel support 2 h = 2 run.h_factor dp = " + format_number(support) +
+                 " m wider than the domain along " + axis_name(k) + " (" + format_number(extent) +
+                 " m): the particles would all be neighbours of one cell; lower run.dp");
     }
   }
 
