@@ -16,7 +16,6 @@
 #include <sstream>
 #include <thread>
 
-#include "coupler/block_lattice.h"
 #include "coupler/checkpoint.h"
 #include "coupler/coupled_step.h"
 #include "coupler/progress_line.h"
@@ -115,10 +114,8 @@ void RunSession::load_fresh_run() {
   record_.dimension = scene_.run.dimension;
   record_.end_time = scene_.run.end_time;
   record_.ledger = ConservationLedger(scene_.run.dimension);
-  const std::string too_big = size_gate(scene_, options_.out_dir, options_.force_size);
-  if (!too_big.empty()) throw BadInput("the run does not fit this machine: " + too_big);
-  if (const std::string overlap = block_lattice_problem(scene_); !overlap.empty())
-    throw BadInput("bad scene: " + overlap);
+  const std::string refused = run_gate(scene_, options_.out_dir, options_.force_size);
+  if (!refused.empty()) throw BadInput(refused);
   prepare_output_dir();
 }
 

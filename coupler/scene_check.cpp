@@ -19,6 +19,14 @@ std::string size_gate(const scene::Scene& scene, const std::string& out_dir, boo
                           machine_limits(run_dir_of(scene, out_dir)));
 }
 
+std::string run_gate(const scene::Scene& scene, const std::string& out_dir, bool force) {
+  if (const std::string too_big = size_gate(scene, out_dir, force); !too_big.empty())
+    return "the run does not fit this machine: " + too_big;
+  if (const std::string blocks = block_lattice_problem(scene); !blocks.empty())
+    return "bad scene: " + blocks;
+  return "";
+}
+
 int check_scene(const CheckOptions& options, std::ostream& out, std::ostream& err) {
   scene::Scene scene;
   try {

@@ -26,4 +26,9 @@ int check_scene(const CheckOptions& options, std::ostream& out, std::ostream& er
 /// directory `out_dir`) or `force` is set, else why not (run_size_problem's text).
 std::string size_gate(const scene::Scene& scene, const std::string& out_dir, bool force);
 
+/// Everything a fresh run checks after loading its scene, as the error a run stops with (exit
+/// 2): the size gate ("the run does not fit this machine: ..."), then the blocks on the particle
+/// lattice ("bad scene: ...", coupler/block_lattice.h); "" when the scene may run.
+std::string run_gate(const scene::Scene& scene, const std::string& out_dir, bool force);
+
 }  // namespace porosph::coupler

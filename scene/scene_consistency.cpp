@@ -34,12 +34,22 @@ void check_wall_phases(const toml::table& root, const toml::table& wall, const s
   }
 }
 
+/// The `key` text of each table of `array` (none: empty), of those whose `only_with` text is not
+/// empty when `only_with` is given.
+std::vector<std::string> texts_of(const toml::array* array, const std::string& key,
+                                  const std::string& only_with = "") {
+  std::vector<std::string> texts;
+  if (array)
+    for (const auto& element : *array) {
+      const toml::table& t = *element.as_table();
+      if (only_with.empty() || !text_of(t, only_with).empty()) texts.push_back(text_of(t, key));
+    }
+  return texts;
+}
+
 /// The names of the scene's observables.
 std::vector<std::string> observable_names(const toml::table& root) {
-  std::vector<std::string> names;
-  if (const toml::array* observables = root.get_as<toml::array>("observables"))
-    for (const auto& o : *observables) names.push_back(text_of(*o.as_table(), "name"));
-  return names;
+  return texts_of(root.get_as<toml::array>("observables"), "name");
 }
 
 /// A moving wall (moves_with): it names an observable, has a non-zero move_direction of the
@@ -80,11 +90,8 @@ void check_wall_force(const toml::table& root, const toml::table& observable,
   const toml::node* node = observable.get("wall");
   if (!node) return;
   const std::string wall = node->value<std::string>().value_or("");
-  std::vector<std::string> moving;
-  if (const toml::array* walls = root.get_as<toml::array>("walls"))
-    for (const auto& w : *walls)
-      if (!text_of(*w.as_table(), "moves_with").empty())
-        moving.push_back(text_of(*w.as_table(), "label"));
+  const std::vector<std::string> moving =
+      texts_of(root.get_as<toml::array>("walls"), "label", "moves_with");
   if (std::find(moving.begin(), moving.end(), wall) == moving.end())
     errors.fail(node, key + ".wall",
                 "no moving wall (moves_with) labelled '" + wall + "'" + did_you_mean(wall, moving));
@@ -114,9 +121,7 @@ void check_load(const toml::table& root, const toml::table& observable, const st
   const toml::node* node = observable.get("load");
   if (!node) return;
   const std::string load = node->value<std::string>().value_or("");
-  std::vector<std::string> labels;
-  if (const toml::array* loads = root["soil"]["loads"].as_array())
-    for (const auto& l : *loads) labels.push_back(text_of(*l.as_table(), "label"));
+  const std::vector<std::string> labels = texts_of(root["soil"]["loads"].as_array(), "label");
   if (std::find(labels.begin(), labels.end(), load) == labels.end())
     errors.fail(node, key + ".load",
                 "no [[soil.loads]] entry with label '" + load + "'" + did_you_mean(load, labels));

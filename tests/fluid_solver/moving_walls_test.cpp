@@ -11,10 +11,7 @@ namespace porosph::fluid {
 namespace {
 
 scene::Shape wall_box(std::vector<double> lo, std::vector<double> hi) {
-  scene::Shape s;
-  s.kind = scene::Shape::Kind::Box;
-  s.min = std::move(lo);
-  s.max = std::move(hi);
+  scene::Shape s = testing::box(std::move(lo), std::move(hi));
   s.phases = {"water"};
   return s;
 }
@@ -23,9 +20,7 @@ scene::Shape wall_box(std::vector<double> lo, std::vector<double> hi) {
 /// (here unused) observable `floor_speed` and reports its force as `floor_force`.
 scene::Scene column_on_a_moving_floor() {
   scene::Scene s = testing::water_scene(0.01, {-0.05, -0.05}, {0.25, 0.35});
-  scene::Shape water = wall_box({0.0, 0.0}, {0.2, 0.2});
-  water.phases.clear();
-  s.water->blocks = {water};
+  s.water->blocks = {testing::box({0.0, 0.0}, {0.2, 0.2})};
   scene::Shape floor = wall_box({-0.03, -0.03}, {0.23, 0.0});
   floor.label = "floor";
   floor.moves_with = "floor_speed";

@@ -4,7 +4,6 @@
 
   tools/validation/mandel_plot.py OUT.png LABEL=FILE.csv [LABEL=FILE.csv ...]
 """
-import csv
 import sys
 
 import matplotlib
@@ -12,11 +11,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-
-def read(path):
-    with open(path) as f:
-        rows = list(csv.DictReader(f))
-    return {k: [float(r[k]) for r in rows] for k in rows[0]}
+from consolidation_plot import read  # noqa: E402  (same folder: the CSV reader of the series)
 
 
 def main():
