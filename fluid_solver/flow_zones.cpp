@@ -95,7 +95,7 @@ std::size_t FlowZones<D>::renew(FluidParticles<D>& P, double volume, std::int64_
   std::size_t zone_particles = 0;
   for (std::size_t a = 0; a < P.n_free; ++a) {
     const int z = P.zone[a];
-    if (z < 0) continue;
+    if (z < 0 || z >= static_cast<int>(inflows_.size())) continue;  // free, or an open buffer's
     ++zone_particles;
     if (!past_downstream(z, P.position[a])) continue;
     born_.append_copy(P, a);  // same zone, transverse position, velocities, density, pressure

@@ -48,6 +48,8 @@ FluidSolver<D>::FluidSolver(const scene::Scene& s)
       damping_(DampingStage::from_scene(s)),
       zones_(*s.water, params_.dp, damping_.duration()),
       reservoirs_(*s.water, params_.gravity, params_.dp, params_.h, params_.eos),
+      open_(*s.water, {params_.gravity, params_.h, params_.eos}, params_.dp, damping_.duration(),
+            static_cast<int>(zones_.inflow_count())),
       moving_walls_(s),
       pore_fields_(s.has_soil()) {
   if (s.run.kernel == "cubic_spline") {
@@ -60,7 +62,7 @@ FluidSolver<D>::FluidSolver(const scene::Scene& s)
   for (const auto& o : s.observables)
     if (o.phase == "water") observables_.push_back(sph::prepare_observable<D>(o));
 
-  InitialParticles<D> initial = initial_particles<D>(s, params_, box_, zones_);
+  InitialParticles<D> initial = initial_particles<D>(s, params_, box_, zones_, open_);
   particles_ = std::move(initial.particles);
   next_wall_removal_ = initial.next_wall_removal;
   next_id_ = static_cast<std::int64_t>(particles_.size());
@@ -88,6 +90,7 @@ std::vector<std::string> FluidSolver<D>::active_terms() const {
   if (zones_.inflow_count() > 0) terms.push_back("inflow");
   if (zones_.has_outflows()) terms.push_back("outflow");
   if (reservoirs_.count() > 0) terms.push_back("reservoir");
+  if (open_.count() > 0) terms.push_back("open_reservoir");
   if (box_.any_periodic()) terms.push_back("periodic");
   if (damping_.duration() > 0.0) terms.push_back("damping_stage_freeze");
   return terms;
@@ -308,13 +311,17 @@ void FluidSolver<D>::integrate(double dt) {
   }
   const std::uint64_t born_before = born_count_, removed_before = removed_count_;
   zones_.begin_step(time_, dt);
-  book_water_integration(P, params_.gravity, dt, dt_previous_, euler, zones_, book_);
+  open_.begin_step(P, time_);
+  book_water_integration(P, params_.gravity, dt, dt_previous_, euler, zones_, open_, book_);
   std::int64_t past_zone = 0;  // zone particles past their downstream face
   const bool shifting = params_.shifting_on() && shifting_.concentration.size() == P.n_free;
 #pragma omp parallel for schedule(static) reduction(+ : past_zone)
   for (std::int64_t a = 0; a < n; ++a) {
-    if (P.zone[a] >= 0) {  // prescribed velocity (flow_zones.h)
-      past_zone += zones_.move(P.zone[a], P.position[a], P.velocity[a], P.velocity_previous[a], dt);
+    if (P.zone[a] >= 0) {  // prescribed velocity (flow_zones.h, open_reservoirs.h)
+      const int z = P.zone[a];
+      past_zone += open_.owns(z)
+                       ? open_.move(z, P.position[a], P.velocity[a], P.velocity_previous[a], dt)
+                       : zones_.move(z, P.position[a], P.velocity[a], P.velocity_previous[a], dt);
     } else {
       sph::verlet_step_coupled<D>(P.position[a], P.velocity[a], P.velocity_previous[a],
                                   P.acceleration[a], P.interaction[a], dt, dt_previous_, euler);
@@ -328,9 +335,11 @@ void FluidSolver<D>::integrate(double dt) {
   // The particles born are inserted at the end of the free range: their momentum is booked.
   std::size_t free_before = P.n_free;
   if (past_zone > 0) born_count_ += zones_.renew(P, params_.volume, next_id_, inflow_mass_);
+  born_count_ += open_.renew(P, params_.volume, next_id_, inflow_mass_);
   book_[kWaterInflow] += momentum_of(P, free_before, P.n_free);
   dt_previous_ = dt;
   remove_leaving_particles();
+  open_.capture_and_impose(P);
   free_before = P.n_free;
   if (reservoirs_.count() > 0) born_count_ += reservoirs_.refill(P, time_, next_id_, inflow_mass_);
   book_[kWaterReservoir] += momentum_of(P, free_before, P.n_free);
@@ -343,8 +352,10 @@ template <int D>
 bool FluidSolver<D>::leaves(std::size_t a) const {
   const FluidParticles<D>& P = particles_;
   if (box_.outside(P.position[a])) return true;
+  if (open_.owns(P.zone[a])) return open_.past_far_face(P.zone[a], P.position[a]);
   return P.zone[a] < 0 &&
-         (zones_.in_outflow(P.position[a], time_) || reservoirs_.above_level(P.position[a], time_));
+         (zones_.in_outflow(P.position[a], time_) ||
+          reservoirs_.above_level(P.position[a], time_) || open_.above_level(P.position[a]));
 }
 
 template <int D>
@@ -352,7 +363,8 @@ void FluidSolver<D>::remove_leaving_particles() {
   const FluidParticles<D>& P = particles_;
   const auto leaving = [this](std::size_t a) { return leaves(a); };
   const auto removing = [this, &P](std::size_t a) {  // its momentum leaves with it
-    const bool outflow = box_.outside(P.position[a]) || zones_.in_outflow(P.position[a], time_);
+    const bool outflow = box_.outside(P.position[a]) || zones_.in_outflow(P.position[a], time_) ||
+                         open_.owns(P.zone[a]) || open_.above_level(P.position[a]);
     book_[outflow ? kWaterOutflow : kWaterReservoir] -= P.mass[a] * P.velocity[a];
   };
   removed_count_ +=

@@ -17,6 +17,7 @@
 #include "fluid_solver/moving_walls.h"
 #include "fluid_solver/particle_shifting.h"
 #include "fluid_solver/pore_fields.h"
+#include "fluid_solver/open_reservoirs.h"
 #include "fluid_solver/reservoirs.h"
 #include "fluid_solver/water_impulse_book.h"
 #include "io/checkpoint_file.h"
@@ -110,6 +111,7 @@ class FluidSolver {
   const sph::NeighbourList<D>& neighbours() const { return neighbours_; }
   const FlowZones<D>& flow_zones() const { return zones_; }
   const Reservoirs<D>& reservoirs() const { return reservoirs_; }
+  const OpenReservoirs<D>& open_reservoirs() const { return open_; }
   const DampingStage& damping_stage() const { return damping_; }
 
  private:
@@ -139,6 +141,7 @@ class FluidSolver {
   DampingStage damping_;
   FlowZones<D> zones_;
   Reservoirs<D> reservoirs_;
+  OpenReservoirs<D> open_;  ///< zone codes after the inflow zones'
   MovingWalls<D> moving_walls_;  ///< [[walls]] with moves_with
   std::vector<sph::PreparedObservable<D>> observables_;
 

@@ -11,7 +11,8 @@ namespace porosph::fluid {
 
 template <int D>
 InitialParticles<D> initial_particles(const scene::Scene& s, const FluidParams<D>& params,
-                                      const sph::DomainBox<D>& box, const FlowZones<D>& zones) {
+                                      const sph::DomainBox<D>& box, const FlowZones<D>& zones,
+                                      const OpenReservoirs<D>& open) {
   using Vec = sph::Vec<D>;
   const double dp = params.dp;
   const std::vector<scene::Shape> water_walls = s.walls_acting_on("water");
@@ -25,6 +26,7 @@ InitialParticles<D> initial_particles(const scene::Scene& s, const FluidParams<D
   for (const auto& block : s.water->blocks) {
     for (const Vec& x : sph::fill_block_outside_walls<D>(block, water_walls, dp)) {
       if (!inside_domain(x) || zones.inflow_at(x) >= 0) continue;
+      if (open.zone_below_level(x) >= 0 || open.above_level(x)) continue;
       water.push_back(x);
       zone.push_back(-1);
     }
@@ -35,6 +37,17 @@ InitialParticles<D> initial_particles(const scene::Scene& s, const FluidParams<D
       if (!inside_domain(x)) continue;
       water.push_back(x);
       zone.push_back(z);
+      ++zone_particles;
+    }
+  }
+  for (int r = 0; r < static_cast<int>(open.count()); ++r) {  // the buffers, below their levels
+    for (const Vec& x : open.buffer_lattice(r)) {
+      bool in_wall = false;
+      for (const scene::Shape& wall : water_walls)
+        in_wall = in_wall || sph::inside_shape<D>(wall, x, dp);
+      if (in_wall || !inside_domain(x)) continue;
+      water.push_back(x);
+      zone.push_back(open.zone_below_level(x));
       ++zone_particles;
     }
   }
@@ -65,7 +78,8 @@ InitialParticles<D> initial_particles(const scene::Scene& s, const FluidParams<D
     const bool wall = i >= P.n_free;
     P.position[i] = wall ? walls[i - P.n_free] : water[i];
     P.zone[i] = wall ? -1 : zone[i];
-    P.velocity[i] = P.zone[i] >= 0 ? zones.velocity(P.zone[i], 0.0) : Vec::Zero();
+    const bool inflow = P.zone[i] >= 0 && !open.owns(P.zone[i]);
+    P.velocity[i] = inflow ? zones.velocity(P.zone[i], 0.0) : Vec::Zero();
     P.velocity_previous[i] = P.velocity[i];
     P.acceleration[i] = P.interaction[i] = P.wall_velocity[i] = Vec::Zero();
     P.viscosity_cut[i] = 0.0;
@@ -90,6 +104,9 @@ InitialParticles<D> initial_particles(const scene::Scene& s, const FluidParams<D
       P.density[i] = params.eos.density(P.pressure[i]);
     }
   }
+  open.capture_and_impose(P);  // the buffers at the hydrostatic pressure of their levels
+  for (std::size_t i = 0; i < P.n_free; ++i)
+    if (open.owns(P.zone[i])) P.pressure[i] = params.eos.pressure(P.density[i]);
   // m = rho(t=0) dp^D: the particle volume m/rho equals the lattice volume dp^D, so the initial
   // hydrostatic state is an SPH equilibrium (with m = rho0 dp^D the volumes of the compressed deep
   // particles are too small and a still tank slowly settles to pressures ~2 % too high at depth).
@@ -99,8 +116,10 @@ InitialParticles<D> initial_particles(const scene::Scene& s, const FluidParams<D
 }
 
 template InitialParticles<2> initial_particles<2>(const scene::Scene&, const FluidParams<2>&,
-                                                  const sph::DomainBox<2>&, const FlowZones<2>&);
+                                                  const sph::DomainBox<2>&, const FlowZones<2>&,
+                                                  const OpenReservoirs<2>&);
 template InitialParticles<3> initial_particles<3>(const scene::Scene&, const FluidParams<3>&,
-                                                  const sph::DomainBox<3>&, const FlowZones<3>&);
+                                                  const sph::DomainBox<3>&, const FlowZones<3>&,
+                                                  const OpenReservoirs<3>&);
 
 }  // namespace porosph::fluid

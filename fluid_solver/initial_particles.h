@@ -2,6 +2,7 @@
 #pragma once
 
 #include "fluid_solver/flow_zones.h"
+#include "fluid_solver/open_reservoirs.h"
 #include "fluid_solver/fluid_params.h"
 #include "fluid_solver/fluid_particles.h"
 #include "scene/scene.h"
@@ -26,6 +27,7 @@ struct InitialParticles {
 /// ids 0..n-1. The arrays are reserved one zone-load ahead for the particles the zones will emit.
 template <int D>
 InitialParticles<D> initial_particles(const scene::Scene& s, const FluidParams<D>& params,
-                                      const sph::DomainBox<D>& box, const FlowZones<D>& zones);
+                                      const sph::DomainBox<D>& box, const FlowZones<D>& zones,
+                                      const OpenReservoirs<D>& open);
 
 }  // namespace porosph::fluid

@@ -14,7 +14,9 @@ template <int D>
 Reservoirs<D>::Reservoirs(const scene::WaterPhase& water, const Vec& gravity, double dp, double h,
                           const TaitEos& eos)
     : g_(gravity.norm()), dp_(dp), eos_(eos), kernel_(h) {
-  if (water.reservoirs.empty()) return;
+  if (std::none_of(water.reservoirs.begin(), water.reservoirs.end(),
+                   [](const scene::ReservoirZone& r) { return r.boundary != "open"; }))
+    return;
   int nonzero = 0;
   for (int k = 0; k < D; ++k)
     if (gravity[k] != 0.0) {
@@ -26,6 +28,7 @@ Reservoirs<D>::Reservoirs(const scene::WaterPhase& water, const Vec& gravity, do
   std::size_t columns = 0;
   for (std::size_t i = 0; i < water.reservoirs.size(); ++i) {
     const scene::ReservoirZone& r = water.reservoirs[i];
+    if (r.boundary == "open") continue;  // open_reservoirs.h
     const std::string what = "water.reservoir[" + std::to_string(i) + "]";
     Zone z;
     z.min = sph::to_vec<D>(r.min, what + ".min");

@@ -14,11 +14,13 @@
 //                 by it. It vanishes for constant forces (v^n = q^n + dt_previous a) and sums over
 //                 a run to the difference between the chains' momenta, which Euler steps reset.
 //   inflow        sum m (u^{n+1} - v^n) - dt sum m (a_own - g - a_wall + a_int)   over the zone
-//                 particles, which move at the prescribed u (flow_zones.h) instead of their
+//                 particles (inflow zones and open reservoirs' buffers), which move at the
+//                 prescribed u (flow_zones.h, open_reservoirs.h) instead of their
 //                 equation of motion: what the zone's "piston" adds beyond the forces of the water
 //                 and the interaction on them (their gravity and walls are simply not applied);
 //                 plus sum m v of the particles the zones create
-//   outflow       -sum m v of the particles removed in outflow zones or leaving the domain
+//   outflow       -sum m v of the particles removed in outflow zones or leaving the domain, and
+//                 of those an open reservoir removes (above its level, past its far face)
 //   reservoir     sum m v of the particles a reservoir adds, minus those it removes
 //   damping       -sum m v of the velocities zeroed at the end of the damping stage
 //   pressure_form dt sum m a_form over all free particles (zone particles too): what the
@@ -36,6 +38,7 @@
 
 #include "fluid_solver/flow_zones.h"
 #include "fluid_solver/fluid_particles.h"
+#include "fluid_solver/open_reservoirs.h"
 #include "sph/impulse_book.h"
 
 namespace porosph::fluid {
@@ -71,11 +74,12 @@ sph::Vec<D> momentum_of(const FluidParticles<D>& P, std::size_t begin, std::size
 
 /// Adds to `book` the gravity, walls, verlet_chain and zone-particle inflow terms (above) of the
 /// step of length dt that is about to integrate P's free particles: call with the state before
-/// it, after zones.begin_step(time, dt). `euler`: an Euler step of the modified Verlet scheme.
+/// it, after zones.begin_step(time, dt) and open.begin_step(P, time). `euler`: an Euler step of the
+/// modified Verlet scheme.
 template <int D>
 void book_water_integration(const FluidParticles<D>& P, const sph::Vec<D>& g, double dt,
                             double dt_previous, bool euler, const FlowZones<D>& zones,
-                            WaterImpulseBook<D>& book) {
+                            const OpenReservoirs<D>& open, WaterImpulseBook<D>& book) {
   using Vec = sph::Vec<D>;
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
   double mass = 0.0;                    // of the integrated particles
@@ -89,8 +93,10 @@ void book_water_integration(const FluidParticles<D>& P, const sph::Vec<D>& g, do
     const Vec& a_own = P.acceleration[a];
     for (int k = 0; k < D; ++k) form[k] += m * P.pressure_form_acceleration[a][k];
     if (P.zone[a] >= 0) {
-      const Vec driven = (zones.end_velocity(P.zone[a]) - P.velocity[a]) -
-                         dt * (a_own - g - P.wall_acceleration[a] + P.interaction[a]);
+      const int z = P.zone[a];
+      const Vec end = open.owns(z) ? open.velocity_at(z, P.position[a]) : zones.end_velocity(z);
+      const Vec driven =
+          (end - P.velocity[a]) - dt * (a_own - g - P.wall_acceleration[a] + P.interaction[a]);
       for (int k = 0; k < D; ++k) zone[k] += m * driven[k];
       continue;
     }

@@ -94,6 +94,10 @@ struct ReservoirZone {
   std::vector<double> min, max;  ///< the box [m]
   double level = 0.0;            ///< coordinate of the surface along the gravity axis [m]
   double start_time = 0.0;       ///< holds the level from this time on [s]
+  /// "surface" (particles added and removed at the surface, fluid_solver/reservoirs.h) | "open"
+  /// (a buffer beyond the domain's open side, fluid_solver/open_reservoirs.h)
+  std::string boundary = "surface";
+  std::vector<double> direction;  ///< "open": unit inward normal of the open side
 };
 
 /// Soil-water interaction settings ([coupling]).

@@ -86,6 +86,28 @@ void add_flow_zones(SceneSchema& s) {
                        .fallback("0.0")
                        .at_least(0)
                        .doc("The zone holds the level from this time on."));
+  s.keys.push_back(
+      Key("water.reservoir[].boundary", T::String)
+          .fallback("\"surface\"")
+          .one_of({"surface", "open"})
+          .doc("\"surface\": the level is held by adding and removing particles at the surface "
+               "(above). \"open\": the box is a buffer beyond the domain's open side (no wall "
+               "there), filled with water at the hydrostatic pressure of the level, through "
+               "which water enters and leaves the pool (Tafuni et al. 2018): its particles carry "
+               "p = rho0 g (level - height) (the weakly compressible still-water pressure, "
+               "inverse eq. 4 for the density) and move along `direction` with the mean normal "
+               "velocity of the water within 2h of the face, per dp-high row; a buffer particle "
+               "crossing the face becomes water and is replaced one buffer length behind "
+               "(booked as inflow); water crossing into the buffer below the level becomes "
+               "buffer, above it is removed, and buffer leaving at the far face is removed "
+               "(booked as outflow). Nothing is added or removed at the pool's surface, so the "
+               "pool is not stirred. Needs `direction`; the box must be at least 2h thick along "
+               "it; start_time must be 0 (fluid_solver/open_reservoirs.h)."));
+  s.keys.push_back(Key("water.reservoir[].direction", T::Vector)
+                       .optional()
+                       .doc("For boundary = \"open\": unit vector along one axis across gravity, "
+                            "from the buffer into the domain (the box's face along it is the "
+                            "open side)."));
 }
 
 void add_coupling(SceneSchema& s) {
@@ -168,6 +190,27 @@ void check_reservoirs(const toml::table& root, const ShapeChecker& shapes,
     if (nonzero != 1)
       errors.fail(zone.get("level"), key + ".level",
                   "a reservoir needs run.gravity along one axis, e.g. [0.0, -9.81]");
+    const bool open = zone["boundary"].value_or<std::string>("surface") == "open";
+    if (open != zone.contains("direction"))
+      errors.fail(zone.get(open ? "boundary" : "direction"), key + ".direction",
+                  open ? "an open reservoir needs `direction` (into the domain, e.g. [1.0, 0.0])"
+                       : "`direction` is for boundary = \"open\" only");
+    if (open && zone["start_time"].value_or(0.0) != 0.0)
+      errors.fail(zone.get("start_time"), key + ".start_time",
+                  "an open reservoir holds its level from t = 0; leave start_time out");
+    if (open && zone.contains("direction")) {
+      const std::vector<double> d = vector_of(zone.get("direction"));
+      int along = 0;
+      std::size_t along_axis = 0;
+      for (std::size_t k = 0; k < d.size(); ++k)
+        if (d[k] != 0.0) {
+          ++along;
+          along_axis = k;
+        }
+      if (along != 1 || (nonzero == 1 && along_axis == axis))
+        errors.fail(zone.get("direction"), key + ".direction",
+                    "must point along one axis across gravity, e.g. [1.0, 0.0]");
+    }
     const double level = *zone["level"].value<double>();
     const double lo = vector_of(zone.get("min"))[axis], hi = vector_of(zone.get("max"))[axis];
     if (!(level > lo && level < hi))
@@ -187,6 +230,8 @@ void build_flow_zones(const toml::table& water, WaterPhase& w) {
       z.max = vector_of(t.get("max"));
       z.level = *t["level"].value<double>();
       z.start_time = *t["start_time"].value<double>();
+      z.boundary = *t["boundary"].value<std::string>();
+      if (t.contains("direction")) z.direction = vector_of(t.get("direction"));
       w.reservoirs.push_back(std::move(z));
     }
   }

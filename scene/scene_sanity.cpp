@@ -97,6 +97,22 @@ class SanityChecker {
       const bool given = root_.at_path(key + ".velocity").node() != nullptr;
       prescribed_speed(w.inflows[i].speed, key + (given ? ".velocity" : ".flow_rate"), w);
     }
+    for (std::size_t i = 0; i < w.reservoirs.size(); ++i) {
+      const ReservoirZone& r = w.reservoirs[i];
+      if (r.boundary != "open" || r.direction.size() != r.min.size()) continue;
+      std::size_t axis = 0;
+      for (std::size_t k = 0; k < r.direction.size(); ++k)
+        if (r.direction[k] != 0.0) axis = k;
+      const double dp = scene_.run.dp, support = 2.0 * scene_.h();
+      // the buffer's rows along the normal, as the solver counts them (sph::lattice_count)
+      const double rows = std::max(0.0, std::ceil((r.max[axis] - r.min[axis]) / dp - 0.5 - 1e-9));
+      if (rows * dp < support - 1e-12 * dp)
+        fail("water.reservoir[" + std::to_string(i) + "].max",
+             "the open reservoir's buffer holds " + format_number(rows) + " rows of run.dp = " +
+                 format_number(dp) + " m along its direction (" + format_number(rows * dp) +
+                 " m), less than the kernel support 2 h = " + format_number(support) +
+                 " m: the water next to the open side would lack neighbours; widen the box");
+    }
     if (w.initial_velocity == "taylor_green")
       prescribed_speed(w.taylor_green_speed, "water.taylor_green_speed", w);
     const double mass = w.rho0 * std::pow(scene_.run.dp, scene_.run.dimension);

@@ -57,5 +57,36 @@ TEST(SceneReservoirs, ErrorsNameFileLineAndKey) {
   for (const ErrorCase& c : cases) expect_error(c);
 }
 
+TEST(SceneReservoirs, OpenBoundaryKeysAndTheirErrors) {
+  const std::string open = "level = 0.4\nboundary = \"open\"\ndirection = [1.0, 0.0]";
+  const Scene s = load_scene_text(with_reservoir("level = 0.4", open), "x.toml");
+  EXPECT_EQ(s.water->reservoirs[0].boundary, "open");
+  EXPECT_EQ(s.water->reservoirs[0].direction, (std::vector<double>{1.0, 0.0}));
+  EXPECT_EQ(load_scene_text(with_reservoir(), "x.toml").water->reservoirs[0].boundary, "surface");
+  const std::vector<ErrorCase> cases = {
+      {"open without direction", with_reservoir("level = 0.4", "level = 0.4\nboundary = \"open\""),
+       "water.reservoir[0].direction", "boundary = \"open\"",
+       "an open reservoir needs `direction` (into the domain, e.g. [1.0, 0.0])"},
+      {"direction on a surface reservoir",
+       with_reservoir("level = 0.4", "level = 0.4\ndirection = [1.0, 0.0]"),
+       "water.reservoir[0].direction", "direction = [1.0, 0.0]",
+       "`direction` is for boundary = \"open\" only"},
+      {"direction along gravity",
+       with_reservoir("level = 0.4", with(open, "[1.0, 0.0]", "[0.0, 1.0]")),
+       "water.reservoir[0].direction", "direction = [0.0, 1.0]",
+       "must point along one axis across gravity, e.g. [1.0, 0.0]"},
+      {"open with a start time", with_reservoir("level = 0.4", open + "\nstart_time = 0.2"),
+       "water.reservoir[0].start_time", "start_time = 0.2",
+       "an open reservoir holds its level from t = 0; leave start_time out"},
+      {"buffer thinner than the kernel support",
+       with_reservoir("max = [0.2, 0.8]\nlevel = 0.4", "max = [0.01, 0.8]\n" + open),
+       "water.reservoir[0].max", "max = [0.01, 0.8]",
+       "the open reservoir's buffer holds 1 rows of run.dp = 0.01 m along its direction (0.01 "
+       "m), less than the kernel support 2 h = 0.024 m: the water next to the open side would "
+       "lack neighbours; widen the box"},
+  };
+  for (const ErrorCase& c : cases) expect_error(c);
+}
+
 }  // namespace
 }  // namespace porosph::scene::test

@@ -59,15 +59,37 @@ std::vector<char> connected_to_floor(const std::vector<double>& xs, const std::v
   return marked;
 }
 
-/// The level of the reservoir whose box holds x (the first such); NaN if none.
+/// The level of the reservoir whose box lies nearest to x along x (0 where it holds x: a surface
+/// reservoir over its pool; an open reservoir's buffer lies beyond its pool's end); NaN if none.
 double reservoir_level(const nlohmann::json& water, double x) {
   if (!water.contains("reservoir")) return std::nan("");
+  double level = std::nan(""), nearest = 1e300;
   for (const auto& r : water.at("reservoir")) {
     const auto lo = r.at("min").get<std::vector<double>>();
     const auto hi = r.at("max").get<std::vector<double>>();
-    if (x >= lo[0] && x <= hi[0]) return r.at("level").get<double>();
+    const double distance = std::max({0.0, lo[0] - x, x - hi[0]});
+    if (distance < nearest) nearest = distance, level = r.at("level").get<double>();
   }
-  return std::nan("");
+  return level;
+}
+
+/// The tank: the container wall, or (a pool open onto a reservoir's buffer) the bounding box of the
+/// water blocks that are boxes.
+Box tank_box(const nlohmann::json& parameters) {
+  for (const auto& wall : parameters.at("walls"))
+    if (wall.at("shape").get<std::string>() == "container")
+      return seepage_box(wall, "seepage_embankment", "the tank", "container");
+  Box tank{1e300, 1e300, -1e300, -1e300};
+  for (const auto& block : parameters.at("water").at("blocks")) {
+    if (block.at("shape").get<std::string>() != "box") continue;
+    const auto lo = block.at("min").get<std::vector<double>>();
+    const auto hi = block.at("max").get<std::vector<double>>();
+    tank = {std::min(tank.x0, lo[0]), std::min(tank.y0, lo[1]), std::max(tank.x1, hi[0]),
+            std::max(tank.y1, hi[1])};
+  }
+  if (!(tank.x1 > tank.x0))
+    throw std::runtime_error("seepage_embankment: no container wall and no box of water");
+  return tank;
 }
 
 }  // namespace
@@ -86,12 +108,7 @@ SeepageEmbankmentCheck check_seepage_embankment(const std::string& run_dir, doub
   const auto& w = parameters.at("water");
   const Box dam = seepage_box(parameters.at("soil").at("blocks").at(0), "seepage_embankment",
                               "the first soil block");
-  const nlohmann::json* tank_entry = nullptr;
-  for (const auto& wall : parameters.at("walls"))
-    if (tank_entry == nullptr && wall.at("shape").get<std::string>() == "container")
-      tank_entry = &wall;
-  if (tank_entry == nullptr) throw std::runtime_error("seepage_embankment: no container wall");
-  const Box tank = seepage_box(*tank_entry, "seepage_embankment", "the tank", "container");
+  const Box tank = tank_box(parameters);
 
   SeepageEmbankmentCheck out;
   out.dp = scene.dp;

@@ -108,7 +108,7 @@ SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
   const Box upstream{layer.x0 + margin, layer.y1 + margin, weir.x0 - margin, 1e9};
   const Box downstream{weir.x1 + margin, layer.y1 + margin, layer.x1 - margin, 1e9};
   const Box under{weir.x0 + margin, layer.y0, weir.x1 - margin, layer.y1};
-  const Box exit{weir.x1, layer.y1 - dp, weir.x1 + out.exit_stretch, layer.y1};
+  const Box exit{weir.x1, layer.y1 - dp, weir.x1 + out.exit_stretch, layer.y1 + dp};
   std::vector<double> probe_h(probe_points.size(), 0.0);
   double h1 = 0, h2 = 0, exit_gradient = 0;
   // The run's own heads on the layer's top, per FV cell of the finest reference grid.
@@ -128,7 +128,7 @@ SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
       if (!s.free(i)) continue;
       const double xi = s.px(i), yi = s.py(i);
       const double head = yi + water.pressure_head(s.p.values[i]);
-      if (upstream.contains(xi, yi) && yi < top_up - margin) {
+      if (upstream.contains(xi, yi) && yi < top_up - 1.5 * dp) {
         sum_h1 += head, ++n1;
         if (xi > weir.x0 - 0.1) near_sum += head, ++near_count;
       }
@@ -139,7 +139,7 @@ SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
                                    static_cast<long>(std::floor(u + dp / cell)));
         for (long k = first; k <= last; ++k) top_sum[k] += head, top_count[k] += 1.0;
       }
-      if (downstream.contains(xi, yi) && yi < top_down - margin) sum_h2 += head, ++n2;
+      if (downstream.contains(xi, yi) && yi < top_down - 1.5 * dp) sum_h2 += head, ++n2;
       if (under.contains(xi, yi)) flux += s.volume(i) * s.v.values[2 * i];
       if (exit.contains(xi, yi)) exit_v += s.v.values[2 * i + 1], ++n_exit;
       for (std::size_t k = 0; k < probe_points.size(); ++k) {

@@ -10,11 +10,13 @@
 //
 // Measured on the SPH run, averaged over the outputs in the last `window` seconds:
 //   - pool heads h1, h2: mean of z + Phi(p)/g (still_water.h) over the water in each pool (2 dp
-//     away from the layer, the walls, the weir and the surface);
+//     away from the layer, the walls and the weir, below the two top rows);
 //   - discharge q: sum V u_x / w over the water in the layer under the weir, x within the weir's
 //     width less 2 dp on each side (in this model the water velocity inside soil is the Darcy
 //     velocity, so q is its integral over the depth);
-//   - exit gradient: mean upward velocity / K of the water in the layer's top row over the stretch
+//   - exit gradient: mean upward velocity / K of the water within dp of the layer's top (the Darcy
+//     velocity inside, the same flux just above; the water there seeps upwards, so a band of the
+//     top row alone empties from time to time at coarse dp) over the stretch
 //     `exit_stretch` next to the weir's downstream face, against the FV mean upward gradient there;
 //   - pore pressure at probes: the mean head z + Phi(p)/g of the water in a box of +-dp around
 //     the point, converted to the pressure at the point, p(h - z) of still weakly compressible
