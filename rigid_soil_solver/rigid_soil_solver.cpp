@@ -5,7 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "coupler/interaction/submerged_density.h"
+#include "porous/submerged_density.h"
 #include "sph/checkpoint_arrays.h"
 #include "sph/non_finite_report.h"
 
@@ -34,7 +34,7 @@ RigidSoilSolver<D>::RigidSoilSolver(const scene::Scene& scene)
   // nothing is submerged.
   for (const scene::SoilMaterial& m : scene.soil->materials) {
     submerged_ratio_.push_back(
-        scene.has_water() ? coupler::submerged_density_ratio(m, scene.water->rho0) : 1.0);
+        scene.has_water() ? porous::submerged_density_ratio(m, scene.water->rho0) : 1.0);
   }
   zeros_.assign(9 * skeleton_.size(), 0.0);  // the widest always-zero field: stress, N x 9
   for (const auto& o : scene.observables)
@@ -113,8 +113,8 @@ void RigidSoilSolver<D>::advance(double dt) {
   RigidSkeleton<D>& S = skeleton_;
   for (std::size_t k = 0; k < interaction_.size() / D; ++k) {
     const std::size_t i = static_cast<std::size_t>(overlap_index_[k]);
-    const double ratio = coupler::submerged_density(1.0, S.saturation[i], submerged_saturation_,
-                                                    submerged_ratio_[S.material[i]]);
+    const double ratio = porous::submerged_density(1.0, S.saturation[i], submerged_saturation_,
+                                                   submerged_ratio_[S.material[i]]);
     const double submerged_mass = S.mass[i] * ratio;  // m^s = m rho^s / rho
     for (int c = 0; c < D; ++c)
       S.absorbed_impulse[i][c] += submerged_mass * interaction_[k * D + c] * dt;

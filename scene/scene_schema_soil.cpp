@@ -107,7 +107,7 @@ void add_soil_materials(SceneSchema& s) {
                        .at_least(0.01)
                        .at_most(0.99)
                        .doc("Initial porosity n0 (eq. 18-20); within the range the soil solver "
-                            "clamps every porosity to (soil_solver/porosity.h), so that no value "
+                            "clamps every porosity to (porous/porosity.h), so that no value "
                             "is changed silently."));
   s.keys.push_back(Key(m + "young_modulus", T::Float)
                        .unit("Pa")

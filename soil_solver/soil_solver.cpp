@@ -4,8 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "porous/porosity.h"
 #include "soil_solver/initial_stress.h"
-#include "soil_solver/porosity.h"
 #include "soil_solver/soil_output.h"
 #include "soil_solver/soil_rates.h"
 #include "soil_solver/soil_walls.h"
@@ -322,7 +322,7 @@ void SoilSolver<D>::advance(double dt) {
     P.displacement[i] += dt * P.velocity[i];
     P.density[i] += dt * P.density_rate[i];
     const SoilMaterialConstants& m = params_.materials[P.material[i]];
-    P.porosity[i] = porosity_from_density(m.porosity, P.reference_density[i], P.density[i]);
+    P.porosity[i] = porous::porosity_from_density(m.porosity, P.reference_density[i], P.density[i]);
     box_.wrap(P.position[i]);
   }
   time_ += dt;

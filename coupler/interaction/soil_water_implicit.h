@@ -43,7 +43,7 @@ void SoilWaterSums<D, Kernel>::implicit_drag(const coupling::StepState& water,
         // velocity, over 1 + dt (lambda_a + lambda_i) (one backward-Euler step of the pair's
         // relative velocity, linearised; soil_water_interaction.h).
         const Vec v_r = water_predicted_[a] - soil_predicted_[i];
-        const Vec f = seepage_force<D>(soil_i.a, soil_i.b, v_r) *
+        const Vec f = porous::seepage_force<D>(soil_i.a, soil_i.b, v_r) *
                       (volume_a * soil_i.volume * w[c] / (1.0 + dt * (rate_a + out.soil_rate[i])));
         double* soil_sums = acc.data() + static_cast<std::size_t>(i) * D;
         for (int k = 0; k < D; ++k) soil_sums[k] += f[k];

@@ -31,11 +31,11 @@ InteractionParameters parameters_from_scene(const scene::Scene& s) {
   p.implicit_drag = s.coupling.implicit_drag;
   for (const scene::SoilMaterial& m : s.soil->materials) {
     SoilMaterialTerms terms;
-    terms.law = SeepageLaw::from_material(m, gravity, nu);
+    terms.law = porous::SeepageLaw::from_material(m, gravity, nu);
     if (!(m.density > 0.0)) {
       throw std::invalid_argument("soil material '" + m.name + "': density must be > 0");
     }
-    terms.submerged_ratio = submerged_density_ratio(m, water.rho0);
+    terms.submerged_ratio = porous::submerged_density_ratio(m, water.rho0);
     terms.fixed = m.fixed;
     p.materials.push_back(terms);
   }

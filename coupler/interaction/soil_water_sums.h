@@ -16,9 +16,9 @@
 #include <vector>
 
 #include "coupler/interaction/cross_neighbours.h"
-#include "coupler/interaction/seepage_force.h"
 #include "coupler/interaction/soil_water_interaction.h"
-#include "coupler/interaction/submerged_density.h"
+#include "porous/seepage_law.h"
+#include "porous/submerged_density.h"
 #include "proto/coupling_client.h"
 #include "sph/domain_box.h"
 #include "sph/neighbour_list.h"
@@ -28,7 +28,7 @@ namespace porosph::coupler {
 
 /// Per soil material: its seepage law, r_m of the submerged density and whether it is a fixed bed.
 struct SoilMaterialTerms {
-  SeepageLaw law;
+  porous::SeepageLaw law;
   double submerged_ratio = 1.0;
   bool fixed = false;
 };
@@ -119,10 +119,10 @@ class SoilWaterSums final : public InteractionEngine {
       d.velocity = Eigen::Map<const Vec>(soil.overlap_velocity.data() + i * D);
       d.volume = soil.overlap_mass[i] / soil.overlap_density[i];
       d.solid_volume = d.volume * (1.0 - soil.overlap_porosity[i]);
-      const SeepageLaw& law = p_.materials[soil.overlap_material[i]].law;
-      const soil::SeepageCoefficients c = forces && law.active()
-                                              ? law.coefficients(soil.overlap_porosity[i])
-                                              : soil::SeepageCoefficients{};
+      const porous::SeepageLaw& law = p_.materials[soil.overlap_material[i]].law;
+      const porous::SeepageCoefficients c = forces && law.active()
+                                                ? law.coefficients(soil.overlap_porosity[i])
+                                                : porous::SeepageCoefficients{};
       d.a = p_.unit_weight_water * c.a;
       d.b = p_.unit_weight_water * c.b;
     }
@@ -202,8 +202,8 @@ class SoilWaterSums final : public InteractionEngine {
           // the rate column is summed also when no rates are asked (soil_pass ignores it then).
           const SoilPairData& soil_i = pair_data[soil_index[c]];
           const Vec v_r = v_a - soil_i.velocity;
-          const Vec f = seepage_force<D>(soil_i.a, soil_i.b, v_r);
-          const double rate = seepage_rate_coefficient<D>(soil_i.a, soil_i.b, v_r);
+          const Vec f = porous::seepage_force<D>(soil_i.a, soil_i.b, v_r);
+          const double rate = porous::seepage_rate_coefficient<D>(soil_i.a, soil_i.b, v_r);
           const double weight = volume_a * kernel_w[c];
           double* soil_sums = soil_rows + static_cast<std::size_t>(soil_index[c]) * kStride;
           for (int k = 0; k < D; ++k) soil_sums[k] += weight * f[k];
@@ -263,8 +263,8 @@ class SoilWaterSums final : public InteractionEngine {
       if (!forces) continue;
       const SoilMaterialTerms& material = p_.materials[soil.overlap_material[i]];
       const double rho = soil.overlap_density[i];
-      const double rho_s =
-          submerged_density(rho, sums[D], p_.submerged_saturation, material.submerged_ratio);
+      const double rho_s = porous::submerged_density(rho, sums[D], p_.submerged_saturation,
+                                                     material.submerged_ratio);
       const double effective_mass = soil.overlap_mass[i] * rho_s / rho;  // m_i^s
       effective_mass_[i] = effective_mass;
       Vec acceleration;

@@ -69,7 +69,9 @@ TEST(MandelCase, CoarseSampleShowsTheMandelCryerRiseAndFall) {
   EXPECT_LE(std::abs(m.peak_time_error), 0.05);
   ASSERT_EQ(m.profiles.size(), 5u);
   for (const auto& p : m.profiles)
-    if (p.judged) EXPECT_LE(p.max_error, 0.12) << "T " << p.time_factor;
+    if (p.judged) {
+      EXPECT_LE(p.max_error, 0.12) << "T " << p.time_factor;
+    }
   EXPECT_LE(std::abs(m.final_plate_error), 0.1);
   // Non-monotonic: the centre rises above its first share, then falls well below its peak.
   EXPECT_GT(m.peak, 1.05 * m.initial);

@@ -6,10 +6,10 @@
 #include <random>
 
 #include "coupler/interaction/overlap_region.h"
-#include "coupler/interaction/seepage_force.h"
 #include "coupler/interaction/soil_water_interaction.h"
-#include "coupler/interaction/submerged_density.h"
 #include "coupler/run_record.h"
+#include "porous/seepage_law.h"
+#include "porous/submerged_density.h"
 #include "tests/coupler/interaction_fixtures.h"
 
 namespace porosph::testing {
@@ -107,7 +107,7 @@ void check_cloud(int d, std::size_t n_soil, std::size_t n_water) {
   std::size_t pairs = 0;
   for (std::size_t i = 0; i < n_soil; ++i) {
     const auto& m = scene.soil->materials[soil.overlap_material[i]];
-    const auto law = coupler::SeepageLaw::from_material(m, 9.81, 1e-6);
+    const auto law = porous::SeepageLaw::from_material(m, 9.81, 1e-6);
     const auto c = law.coefficients(soil.overlap_porosity[i]);
     for (std::size_t a = 0; a < n_water; ++a) {
       std::vector<double> dx(d), vr(d);
@@ -144,7 +144,7 @@ void check_cloud(int d, std::size_t n_soil, std::size_t n_water) {
     const auto& m = scene.soil->materials[soil.overlap_material[i]];
     const double rho = soil.overlap_density[i];
     const double rho_s =
-        coupler::submerged_density(rho, sat[i], thr, coupler::submerged_density_ratio(m, 1000.0));
+        porous::submerged_density(rho, sat[i], thr, porous::submerged_density_ratio(m, 1000.0));
     submerged += rho_s != rho;
     EXPECT_NEAR(sat[i], ref_sat[i], 1e-12 * std::max(1.0, ref_sat[i]));
     const double mass_s = soil.overlap_mass[i] * rho_s / rho;  // m_i^s

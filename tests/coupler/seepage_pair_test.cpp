@@ -6,9 +6,9 @@
 // else (a wrong coefficient, density or kernel value is off by far more).
 #include <gtest/gtest.h>
 
-#include "coupler/interaction/seepage_force.h"
 #include "coupler/interaction/soil_water_interaction.h"
-#include "coupler/interaction/submerged_density.h"
+#include "porous/seepage_law.h"
+#include "porous/submerged_density.h"
 #include "tests/coupler/interaction_fixtures.h"
 
 namespace porosph::testing {
@@ -130,15 +130,15 @@ TEST(SeepagePair, SubmergedRuleSwitchesTheSoilDensityAtTheThreshold) {
   for (double saturated : {0.0, 2100.0}) {
     m.saturated_density = saturated;
     const double r_m = ((saturated > 0 ? saturated : 1600.0 + 0.4 * kRhoW) - kRhoW) / 1600.0;
-    EXPECT_LT(relative(coupler::submerged_density_ratio(m, kRhoW), r_m), kTol);
+    EXPECT_LT(relative(porous::submerged_density_ratio(m, kRhoW), r_m), kTol);
     scene::Scene scene = two_phase_scene(m);
     scene.coupling.submerged_saturation = s * (1.0 + 1e-9);  // just above s: not submerged
     expect_pair_accelerations(one_pair(scene, r, {0.0, 0.01}, {0.0, 0.0}), f, r, kRhoSoil);
     scene.coupling.submerged_saturation = s * (1.0 - 1e-9);  // just below s: submerged
     expect_pair_accelerations(one_pair(scene, r, {0.0, 0.01}, {0.0, 0.0}), f, r, kRhoSoil * r_m);
   }
-  EXPECT_EQ(coupler::submerged_density(1600.0, 0.79, 0.8, 0.625), 1600.0);
-  EXPECT_EQ(coupler::submerged_density(1600.0, 0.8, 0.8, 0.625), 1000.0);
+  EXPECT_EQ(porous::submerged_density(1600.0, 0.79, 0.8, 0.625), 1600.0);
+  EXPECT_EQ(porous::submerged_density(1600.0, 0.8, 0.8, 0.625), 1000.0);
 }
 
 TEST(SeepagePair, DampingStageSendsSaturationOnly) {

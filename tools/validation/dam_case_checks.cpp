@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "io/snapshot_reader.h"
-#include "soil_solver/permeability.h"
+#include "porous/permeability.h"
 #include "tools/validation/run_directory.h"
 
 namespace porosph::validation {
@@ -155,7 +155,7 @@ RockfillCheck check_rockfill(const std::string& run_dir) {
   const auto& water = p.at("water");
   double g = 0;
   for (const auto& component : p.at("run").at("gravity")) g += std::pow(component.get<double>(), 2);
-  const auto coefficients = soil::forchheimer_den_adel(
+  const auto coefficients = porous::forchheimer_den_adel(
       gravel.at("porosity").get<double>(), c.d15, std::sqrt(g),
       water.at("viscosity").get<double>() / water.at("rho0").get<double>(),
       gravel.at("den_adel_alpha").get<double>(), gravel.at("den_adel_beta").get<double>());

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "soil_solver/permeability.h"
+#include "porous/permeability.h"
 #include "tools/validation/run_directory.h"
 
 namespace porosph::validation {
@@ -21,15 +21,15 @@ DarcyColumnCheck check_darcy_column(const std::string& run_dir) {
   const double n = m.at("porosity").get<double>();
   DarcyColumnCheck out;
   out.seepage = m.at("seepage").get<std::string>();
-  soil::SeepageCoefficients c;
+  porous::SeepageCoefficients c;
   if (out.seepage == "darcy_kozeny_carman") {
-    c = soil::darcy_kozeny_carman(n, m.at("effective_diameter").get<double>(), g, nu);
+    c = porous::darcy_kozeny_carman(n, m.at("effective_diameter").get<double>(), g, nu);
   } else if (out.seepage == "darcy_conductivity") {
-    c = soil::darcy_constant(m.at("hydraulic_conductivity").get<double>());
+    c = porous::darcy_constant(m.at("hydraulic_conductivity").get<double>());
   } else if (out.seepage == "forchheimer_den_adel") {
-    c = soil::forchheimer_den_adel(n, m.at("d15").get<double>(), g, nu,
-                                   m.at("den_adel_alpha").get<double>(),
-                                   m.at("den_adel_beta").get<double>());
+    c = porous::forchheimer_den_adel(n, m.at("d15").get<double>(), g, nu,
+                                     m.at("den_adel_alpha").get<double>(),
+                                     m.at("den_adel_beta").get<double>());
   } else {
     throw std::runtime_error(run_dir + ": the first soil material has no seepage law");
   }

@@ -11,7 +11,7 @@
 // Pure functions: 0 < n < 1, d > 0, g > 0, nu > 0 are the caller's to ensure.
 #pragma once
 
-namespace porosph::soil {
+namespace porosph::porous {
 
 /// The two coefficients of eq. 13.
 struct SeepageCoefficients {
@@ -49,4 +49,4 @@ inline SeepageCoefficients forchheimer_den_adel(double porosity, double d15, dou
   return c;
 }
 
-}  // namespace porosph::soil
+}  // namespace porosph::porous

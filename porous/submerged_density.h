@@ -12,7 +12,7 @@
 
 #include "scene/scene.h"
 
-namespace porosph::coupler {
+namespace porosph::porous {
 
 /// r_m = (rho_sat - rho_w) / rho_dry of material `m` in water of density `water_density`.
 inline double submerged_density_ratio(const scene::SoilMaterial& m, double water_density) {
@@ -28,4 +28,4 @@ inline double submerged_density(double density, double saturation, double submer
   return saturation >= submerged_saturation ? density * submerged_ratio : density;
 }
 
-}  // namespace porosph::coupler
+}  // namespace porosph::porous

@@ -18,7 +18,7 @@
 
 #include <algorithm>
 
-namespace porosph::soil {
+namespace porosph::porous {
 
 struct PorosityRange {
   double min = 0.01;
@@ -51,4 +51,4 @@ inline double porosity_from_density(double initial_porosity, double reference_de
       initial_porosity, volumetric_strain_from_density(reference_density, density), range);
 }
 
-}  // namespace porosph::soil
+}  // namespace porosph::porous

@@ -2,10 +2,10 @@
 // eq. 14 (Kozeny-Carman) and eq. 15 (Den Adel), against hand calculations.
 #include <gtest/gtest.h>
 
-#include "soil_solver/permeability.h"
-#include "soil_solver/porosity.h"
+#include "porous/permeability.h"
+#include "porous/porosity.h"
 
-namespace porosph::soil {
+namespace porosph::porous {
 namespace {
 
 constexpr double kClosedForm = 1e-13;  // relative; a handful of flops
@@ -65,4 +65,4 @@ TEST(Permeability, DenAdelForTheRockfillGravel) {
 }
 
 }  // namespace
-}  // namespace porosph::soil
+}  // namespace porosph::porous

@@ -3,7 +3,7 @@
 //   13)
 // a force per unit volume of soil [N/m^3] acting on the soil (the water feels the reaction). The
 // coefficients a [s/m], b [s^2/m^2] come from the soil material's seepage law
-// (soil_solver/permeability.h), evaluated at the porosity n of the soil particle: its current
+// (porous/permeability.h), evaluated at the porosity n of the soil particle: its current
 // porosity (eq. 20) when the material has variable_permeability, else its initial porosity n0.
 //   "darcy_kozeny_carman"   a = 1/k, k from Kozeny-Carman (eq. 14, effective_diameter), b = 0
 //   "darcy_conductivity"    a = 1/k, b = 0, k = hydraulic_conductivity at n0; with variable
@@ -18,12 +18,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "porous/permeability.h"
+#include "porous/porosity.h"
 #include "scene/scene.h"
-#include "soil_solver/permeability.h"
-#include "soil_solver/porosity.h"
 #include "sph/vector.h"
 
-namespace porosph::coupler {
+namespace porosph::porous {
 
 /// Eq. 13 with the unit weight folded into the coefficients: f = A v_r + B |v_r| v_r, where
 /// A = gamma_w a [kg/(m^3 s)] and B = gamma_w b [kg/m^4].
@@ -98,27 +98,27 @@ class SeepageLaw {
 
   /// The porosity the coefficients use for a particle whose current porosity is
   /// `particle_porosity`: that porosity with variable permeability (clamped to the admissible
-  /// range of soil_solver/porosity.h, where the coefficients stay finite), else n0.
+  /// range of porous/porosity.h, where the coefficients stay finite), else n0.
   double porosity_used(double particle_porosity) const {
     if (!variable_) return initial_porosity_;
-    const soil::PorosityRange range;
+    const PorosityRange range;
     if (!(particle_porosity >= range.min)) return range.min;  // also NaN
     return std::min(particle_porosity, range.max);
   }
 
   /// a and b of eq. 13 for a particle of current porosity `particle_porosity` ({0, 0} if none).
-  soil::SeepageCoefficients coefficients(double particle_porosity) const {
+  SeepageCoefficients coefficients(double particle_porosity) const {
     const double n = porosity_used(particle_porosity);
     switch (kind_) {
       case Kind::None:
         return {};
       case Kind::DarcyKozenyCarman:
-        return soil::darcy_kozeny_carman(n, diameter_, gravity_, nu_);
+        return darcy_kozeny_carman(n, diameter_, gravity_, nu_);
       case Kind::DarcyConductivity:
-        return soil::darcy_constant(conductivity_ * kozeny_carman_shape(n) /
-                                    kozeny_carman_shape(initial_porosity_));
+        return darcy_constant(conductivity_ * kozeny_carman_shape(n) /
+                              kozeny_carman_shape(initial_porosity_));
       case Kind::ForchheimerDenAdel:
-        return soil::forchheimer_den_adel(n, diameter_, gravity_, nu_, alpha_, beta_);
+        return forchheimer_den_adel(n, diameter_, gravity_, nu_, alpha_, beta_);
     }
     return {};
   }
@@ -136,4 +136,4 @@ class SeepageLaw {
   double alpha_ = 150.0, beta_ = 0.4;
 };
 
-}  // namespace porosph::coupler
+}  // namespace porosph::porous
