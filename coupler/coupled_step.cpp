@@ -226,7 +226,7 @@ void CoupledStepLoop::send_commands(double dt, bool write_output, std::uint32_t 
     command.stop = stop;
     command.write_checkpoint = checkpoint_index > 0;
     command.checkpoint_index = checkpoint_index;
-    // A scene with a single phase exchanges no interaction (DESIGN.md section 1). The vectors
+    // A scene with a single phase exchanges no interaction (docs/design.md section 1). The vectors
     // are assigned in place: their storage is reused from step to step.
     command.interaction_acceleration.clear();
     command.interaction_rate.clear();

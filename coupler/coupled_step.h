@@ -1,4 +1,4 @@
-// The lock-step loop of a coupled run (DESIGN.md section 1, one round trip per step):
+// The lock-step loop of a coupled run (docs/design.md section 1, one round trip per step):
 // collect every solver's state -> soil-water interaction (when both phases exist; its eq. 21
 // limit joins the solvers' dt limits) -> the one shared dt (TimeStepController) -> output / stop
 // flags -> conservation ledger -> send every solver its command (dt, interaction accelerations,

@@ -1,4 +1,4 @@
-// coupler: the PoroSPH command line (DESIGN.md section 6).
+// coupler: the PoroSPH command line (docs/design.md section 6).
 // clang-format off
 //   coupler run SCENE.toml [--out DIR] [--overwrite] [--set key=value ...] [--fluid-solver EXE] [--soil-solver EXE]
 //   coupler run --attach --endpoint tcp://HOST:PORT SCENE.toml

@@ -18,7 +18,7 @@
 
 namespace porosph::coupler {
 
-/// Impulse given to each phase by the interaction (DESIGN.md section 1). The pair force is
+/// Impulse given to each phase by the interaction (docs/design.md section 1). The pair force is
 /// antisymmetric, so the two totals cancel to round-off; relative_imbalance() is what tests assert.
 struct ConservationLedger {
   std::vector<double> impulse_to_water;  ///< sum over steps of dt * sum_a m_a a_a^interaction
@@ -168,7 +168,7 @@ void write_run_json(const std::string& path, const RunRecord& record);
 std::vector<io::XdmfPhaseSeries> xdmf_series(const RunRecord& record, const std::string& out_dir,
                                              std::set<std::string>& phases_without_h5);
 
-/// The fields each built-in phase writes besides position (DESIGN.md section 6); with
+/// The fields each built-in phase writes besides position (docs/design.md section 6); with
 /// `pore_fields` the water's porosity and pore_velocity too (the built-in water solver in a scene
 /// with soil, docs/water-in-soil.md).
 std::vector<io::XdmfField> snapshot_fields_of_phase(const std::string& phase, int dimension,

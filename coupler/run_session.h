@@ -1,4 +1,4 @@
-// `coupler run`: one coupled run from scene to run directory (DESIGN.md sections 1, 4, 6).
+// `coupler run`: one coupled run from scene to run directory (docs/design.md sections 1, 4, 6).
 #pragma once
 
 #include <string>
@@ -25,7 +25,7 @@ struct RunOptions {
   bool force_size = false;
 };
 
-/// Exit codes of the contract (DESIGN.md section 6).
+/// Exit codes of the contract (docs/design.md section 6).
 enum ExitCode { kCompleted = 0, kRunFailed = 1, kBadInput = 2 };
 
 /// Runs the scene (or resumes a run, RunOptions::resume_dir; docs/checkpoints.md); never throws.

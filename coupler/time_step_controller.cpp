@@ -28,7 +28,7 @@ double TimeStepController::next(double dt_min) {
     next_dt = dt_min < dt_ ? dt_min : harmonic_mean(dt_, dt_min);
   } else {
     next_dt = harmonic_mean(dt_, dt0_);
-    // Once within round-off of dt0, be exactly dt0 ("== dt0 once there", DESIGN.md section 4).
+    // Once within round-off of dt0, be exactly dt0 ("== dt0 once there", docs/design.md section 4).
     if (next_dt > dt0_ * (1.0 - 1e-12)) next_dt = dt0_;
   }
   // Round-off guard: the harmonic mean of dt_n <= dt0 and dt0 can exceed dt0 by an ulp.

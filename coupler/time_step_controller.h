@@ -1,4 +1,5 @@
-// The one shared time step of a coupled run: the paper's Fig. 1 smoothing algorithm (DESIGN.md §4).
+// The one shared time step of a coupled run: the paper's Fig. 1 smoothing algorithm (docs/design.md
+// section 4).
 #pragma once
 
 #include <stdexcept>
@@ -12,8 +13,8 @@ class TimeStepCollapse : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Fig. 1 of the seed paper, reconstructed in DESIGN.md section 4. With dt0 the scene's initial
-/// step, dt_n the current one and dt_min the smallest stability limit now:
+/// Fig. 1 of the seed paper, reconstructed in docs/design.md section 4. With dt0 the scene's
+/// initial step, dt_n the current one and dt_min the smallest stability limit now:
 ///   dt_min < dt0 and dt_min < dt_n : dt_{n+1} = dt_min                        (decrease at once)
 ///   dt_min < dt0 and dt_min >= dt_n: dt_{n+1} = 2 dt_n dt_min / (dt_n + dt_min) (harmonic rise)
 ///   dt_min >= dt0                  : dt_{n+1} = 2 dt_n dt0 / (dt_n + dt0)      (relax back to dt0)

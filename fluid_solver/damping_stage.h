@@ -1,4 +1,4 @@
-// The soil's initial damping (dynamic relaxation) stage seen from the water (CASES.md,
+// The soil's initial damping (dynamic relaxation) stage seen from the water (docs/cases.md,
 // "Conventions"): while t < t_d (soil.damping_duration) the free water is frozen - a step that
 // starts before t_d does not integrate the water at all, so positions, velocities and densities
 // keep their values (no density filter either), and inflow speeds are 0 (flow_zones.h). The first

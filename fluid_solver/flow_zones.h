@@ -1,5 +1,5 @@
-// Water inflow and outflow zones (scene [[water.inflow]], [[water.outflow]]; DESIGN.md section 3,
-// "Boundaries").
+// Water inflow and outflow zones (scene [[water.inflow]], [[water.outflow]]; docs/design.md section
+// 3, "Boundaries").
 //
 // Inflow zone: a box whose water particles ("zone particles", FluidParticles::zone = the zone's
 // index) follow the prescribed velocity u(t) = speed(t) e instead of their equation of motion

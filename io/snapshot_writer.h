@@ -1,4 +1,4 @@
-// HDF5 particle snapshots in the layout pinned by DESIGN.md section 6:
+// HDF5 particle snapshots in the layout pinned by docs/design.md section 6:
 //   /snapshots/NNNNNN/            group per output (6-digit zero-padded index), attribute `time`
 //   /snapshots/NNNNNN/<field>     one dataset per field, one row per particle (N or N x cols)
 //   /static/<field>               an unchanging field (FieldView::unchanging), stored once; every

@@ -1,4 +1,4 @@
-// OUT/timeseries.csv (DESIGN.md section 6): one header line, then one row per output time.
+// OUT/timeseries.csv (docs/design.md section 6): one header line, then one row per output time.
 // Every row is flushed to the operating system as soon as it is appended, so a run that fails or is
 // killed keeps every row written before.
 #pragma once

@@ -2,10 +2,10 @@
 //   eps_v = (V - V0) / V0                     (eq. 18, extension positive)
 //   n = V_voids / V = 1 - V_solids / V        (eq. 19)
 //   n = (n0 + eps_v) / (1 + eps_v)            (eq. 20, rigid grains: V_solids constant)
-// A particle keeps its mass, so V / V0 = rho0 / rho and eps_v = rho0 / rho - 1 (DESIGN.md: taken
-// from the density it cannot drift the way an integrated strain trace does). rho and rho0 must be
-// the same kind of density (both saturated, or both dry): the submerged-weight switch changes the
-// weight, not the particle volume.
+// A particle keeps its mass, so V / V0 = rho0 / rho and eps_v = rho0 / rho - 1 (docs/design.md:
+// taken from the density it cannot drift the way an integrated strain trace does). rho and rho0
+// must be the same kind of density (both saturated, or both dry): the submerged-weight switch
+// changes the weight, not the particle volume.
 //
 // Admissible range. Eq. 20 gives n < 0 once eps_v < -n0 (compressed beyond the volume of the
 // grains) and n -> 1 as eps_v -> infinity; the seepage coefficients of permeability.h diverge

@@ -1,15 +1,14 @@
-// The step loop every built-in solver runs against the coupler (DESIGN.md section 1):
+// The step loop every built-in solver runs against the coupler (docs/design.md section 1):
 //   report state + dt limit -> compute own rates (while the coupler computes the interaction from
 //   the same state) -> receive the shared dt, interaction, flags -> write output if asked ->
 //   add interaction -> advance.
 // The state sent carries the dt limits of the latest rates (eq. 21 with the total acceleration of
-// the previous step, DESIGN.md section 1) and the CFL limit of the current speeds; the rates of the
-// initial state are computed before the first report.
-// A solver type plugs in by providing: compute_rates(), fill_state(StepState&, min, max),
-// find_non_finite(std::int64_t*), add_interaction(const std::vector<double>&), advance(double),
-// snapshot_fields(), time(), step(), write_checkpoint(io::CheckpointWriter&),
-// restore_checkpoint(const io::CheckpointReader&); a soil solver also
-// set_saturation(const std::vector<double>&); a solver with set_porosity(const
+// the previous step, docs/design.md section 1) and the CFL limit of the current speeds; the rates
+// of the initial state are computed before the first report. A solver type plugs in by providing:
+// compute_rates(), fill_state(StepState&, min, max), find_non_finite(std::int64_t*),
+// add_interaction(const std::vector<double>&), advance(double), snapshot_fields(), time(), step(),
+// write_checkpoint(io::CheckpointWriter&), restore_checkpoint(const io::CheckpointReader&); a soil
+// solver also set_saturation(const std::vector<double>&); a solver with set_porosity(const
 // std::vector<double>&) (the water solver) gets StepCommand.porosity before each snapshot, and one
 // with set_drag_rate(const std::vector<double>&) StepCommand.interaction_rate every step. A solver
 // with impulse_sources() reports those names with its first state (its fill_state() then fills

@@ -1,7 +1,7 @@
-// The columns every timeseries.csv has before the scene's observables (DESIGN.md, run directory):
-// t, dt, per phase its totals and momentum balance, and for a scene with both phases the cumulative
-// interaction impulses and the soil-water pair count. One list for the coupler that writes them and
-// for the scene check that keeps observable names from shadowing them.
+// The columns every timeseries.csv has before the scene's observables (docs/design.md, run
+// directory): t, dt, per phase its totals and momentum balance, and for a scene with both phases
+// the cumulative interaction impulses and the soil-water pair count. One list for the coupler that
+// writes them and for the scene check that keeps observable names from shadowing them.
 #pragma once
 
 #include <string>

@@ -4,12 +4,12 @@
 //   per particle, in the principal axes of its stress (sigma_k the principal stresses, tension
 //   positive):  R_k = -epsilon sigma_k / rho^2 if sigma_k > 0, else 0;  R = Q diag(R_k) Q^T;
 //   per pair:   R_ij = R_i + R_j,   f_ij = W(r_ij) / W(dp),   term  m_j R_ij f_ij^n grad_i W_ij,
-// dp the initial particle spacing, epsilon ~ 0.5, n ~ 2.55 (CASES.md; the original inputs switch
-// it on for materials with c > 0 - that choice is the scene's, not this header's).
-// R is never positive-definite: it only adds a short-range repulsion between particles in
-// tension, and vanishes in compression.
-// In 2D (plane strain) the principal axes are those of the in-plane 2x2 block, and R has zero
-// out-of-plane row and column (only the in-plane block acts on the 2D kernel gradient).
+// dp the initial particle spacing, epsilon ~ 0.5, n ~ 2.55 (docs/cases.md; the original inputs
+// switch it on for materials with c > 0 - that choice is the scene's, not this header's). R is
+// never positive-definite: it only adds a short-range repulsion between particles in tension, and
+// vanishes in compression. In 2D (plane strain) the principal axes are those of the in-plane 2x2
+// block, and R has zero out-of-plane row and column (only the in-plane block acts on the 2D kernel
+// gradient).
 #pragma once
 
 #include <Eigen/Core>

@@ -17,7 +17,8 @@
 //     (g = sqrt(J2) + 3 I1 sin(psi)); it reproduces the "9 K sin(psi)" and "27 alpha K sin(psi)"
 //     of eq. 12a/12b exactly. For small psi it is ~9 times the plane-strain fit, and psi = phi
 //     does not give associated flow. Kept so the paper can be reproduced literally.
-// For psi = 0 (every case in CASES.md) both forms give beta_psi = 0: plastically incompressible.
+// For psi = 0 (every case in docs/cases.md) both forms give beta_psi = 0: plastically
+// incompressible.
 //
 // Which plastic flow eq. 10 assumes. Eq. 10 matches Mohr-Coulomb in plane strain at plastic flow
 // with ASSOCIATED flow (psi = phi). With the potential above, plane-strain plastic flow

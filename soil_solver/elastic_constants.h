@@ -4,8 +4,8 @@
 // Elasticity, or any continuum-mechanics text):
 //   K = E / (3 (1 - 2 nu)),   G = E / (2 (1 + nu)),
 //   E = 9 K G / (3 K + G),    nu = (3 K - 2 G) / (2 (3 K + G)).
-// Granular-flow example (Bui et al. 2008, CASES.md granular_collapse): E = 0.84 MPa, nu = 0.3 gives
-// K = 0.7 MPa.
+// Granular-flow example (Bui et al. 2008, docs/cases.md granular_collapse): E = 0.84 MPa, nu = 0.3
+// gives K = 0.7 MPa.
 #pragma once
 
 #include <cmath>

@@ -4,7 +4,7 @@
 //   sigma   = sigma_h delta + (sigma_v - sigma_h) u (x) u,   u = -g / |g|  (the "up" direction)
 // with K0 = 1 - sin(phi) (Jaky 1944) or the elastic oedometric value K0 = nu / (1 - nu).
 // rho is the density carrying the weight: the dry / moist density above the water table, the
-// submerged density (saturated - water) below it (CASES.md soil_column); for a layered column
+// submerged density (saturated - water) below it (docs/cases.md soil_column); for a layered column
 // the caller sums rho |g| dz layer by layer and passes sigma_v directly.
 // In 2D plane strain the out-of-plane direction is horizontal too, so sigma_zz = sigma_h (the
 // oedometric state: no lateral strain in any horizontal direction). "Up" always comes from the

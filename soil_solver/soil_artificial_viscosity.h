@@ -3,15 +3,15 @@
 //   Pi_ij = (-alpha c_ij mu_ij + beta mu_ij^2) / rho_ij   if v_ij . x_ij < 0 (approaching), else 0,
 //   mu_ij = h v_ij . x_ij / (r_ij^2 + 0.01 h^2),  c_ij = (c_i + c_j)/2,  rho_ij = (rho_i +
 //   rho_j)/2,
-// with v_ij = v_i - v_j, x_ij = x_i - x_j, alpha = beta = 0.1 for soil (CASES.md, Bui et al. 2008)
-// and c the soil sound speed. Pi_ij >= 0.
+// with v_ij = v_i - v_j, x_ij = x_i - x_j, alpha = beta = 0.1 for soil (docs/cases.md, Bui et al.
+// 2008) and c the soil sound speed. Pi_ij >= 0.
 //
 // Sign: eq. 16 prints "+ Pi_ij delta" inside the stress sum, which with Pi_ij >= 0 would pull
 // approaching particles together. We use the dissipative sign of Monaghan (1992) (the same as the
 // water's eq. 17): a_i = -m_j Pi_ij grad_i W_ij, a repulsion between approaching particles that
 // removes kinetic energy of relative motion and never adds it.
 //
-// Soil sound speed: c_s = sqrt(K / rho). CASES.md's convention passes the submerged density,
+// Soil sound speed: c_s = sqrt(K / rho). docs/cases.md's convention passes the submerged density,
 // c_s = sqrt(K / (rho_s - rho_w)).
 #pragma once
 

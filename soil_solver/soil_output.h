@@ -1,5 +1,5 @@
 // What the soil solver reports: the overlap set and diagnostics sent to the coupler each step, the
-// non-finite check, and the snapshot fields of soil.h5 (DESIGN.md section 6).
+// non-finite check, and the snapshot fields of soil.h5 (docs/design.md section 6).
 #pragma once
 
 #include <algorithm>

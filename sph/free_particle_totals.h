@@ -1,6 +1,6 @@
-// The per-step totals a solver reports of its free particles (DESIGN.md section 1, diagnostics):
-// mass, momentum, kinetic energy, largest speed and bounding box, in one parallel pass. Shared by
-// the water and soil solvers.
+// The per-step totals a solver reports of its free particles (docs/design.md section 1,
+// diagnostics): mass, momentum, kinetic energy, largest speed and bounding box, in one parallel
+// pass. Shared by the water and soil solvers.
 #pragma once
 
 #include <algorithm>

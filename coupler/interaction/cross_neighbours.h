@@ -1,8 +1,8 @@
-// Soil-water neighbour search of the coupler (DESIGN.md section 1, step 3): for each water overlap
-// particle, the soil overlap particles within the kernel support. O(N): a cell list over the soil
-// (cells of size >= support + skin, so a query scans at most 3^D cells), queried with each water
-// particle. The grid covers the soil's bounding box on non-periodic axes and the domain box on
-// periodic ones, where displacements follow the minimum image (sph::DomainBox) and every pair is
+// Soil-water neighbour search of the coupler (docs/design.md section 1, step 3): for each water
+// overlap particle, the soil overlap particles within the kernel support. O(N): a cell list over
+// the soil (cells of size >= support + skin, so a query scans at most 3^D cells), queried with each
+// water particle. The grid covers the soil's bounding box on non-periodic axes and the domain box
+// on periodic ones, where displacements follow the minimum image (sph::DomainBox) and every pair is
 // found exactly once, also when the periodic axis holds fewer than 3 cells.
 //
 // Verlet skin (as sph/neighbour_list.h): the cell search collects, per water particle, the soil

@@ -1,8 +1,8 @@
-// The overlap zone the coupler sends each solver (DESIGN.md section 1): a solver reports only its
-// particles inside the box it was sent, so each solver gets the OTHER phase's region (the bounding
-// box of its interacting particles) inflated by the kernel support 2h, which holds every particle
-// that can pair with the other phase. Along a periodic axis a pair can reach across the faces, so
-// the box spans the whole domain there.
+// The overlap zone the coupler sends each solver (docs/design.md section 1): a solver reports only
+// its particles inside the box it was sent, so each solver gets the OTHER phase's region (the
+// bounding box of its interacting particles) inflated by the kernel support 2h, which holds every
+// particle that can pair with the other phase. Along a periodic axis a pair can reach across the
+// faces, so the box spans the whole domain there.
 #pragma once
 
 #include <vector>

@@ -1,4 +1,4 @@
-// The soil-water interaction the coupler computes each step (DESIGN.md section 1 step 3; seed
+// The soil-water interaction the coupler computes each step (docs/design.md section 1 step 3; seed
 // eq. 13-17, 20): for every soil-water pair within the kernel support 2h, the seepage force per
 // unit soil volume f_ia of eq. 13 (seepage_force.h), and from it
 //   soil  i:  a_i =  sum_a V_a f_ia W_ia / rho_i^s          (eq. 16, last term)

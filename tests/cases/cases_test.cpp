@@ -1,6 +1,6 @@
 // Every case in cases/ runs, shortened, through the real coupler and fluid_solver, and its run
-// directory keeps the contract of DESIGN.md section 6. The hydrostatic tank also runs its full 2 s
-// (at a coarser spacing) against the analytic pressure.
+// directory keeps the contract of docs/design.md section 6. The hydrostatic tank also runs its full
+// 2 s (at a coarser spacing) against the analytic pressure.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // The soil cases run, shortened, through the real coupler and soil_solver: a soil-only scene starts
-// soil_solver and no fluid_solver, its run directory keeps the contract of DESIGN.md section 6
+// soil_solver and no fluid_solver, its run directory keeps the contract of docs/design.md section 6
 // (soil.h5 with the pinned soil fields, run.xdmf resolving), and the dry column settles to the
 // weight of the soil above it.
 #include <gtest/gtest.h>
@@ -72,11 +72,11 @@ TEST(SoilCases, SoilColumnShortened) {
 
 // The whole soil_column at its default dp = 0.01 m (20 x 100 particles, ~16,000 steps, ~20 s):
 // settled vertical stress against the weight of the soil above. Measured: per particle within
-// 2.7 %, row means within 2.1 % (docs/validation-studies.md). Bounds: the 3 % on the row means, and
-// 3.5 % per particle (a 1.3x margin for the run-to-run variation of the OpenMP summation order).
-// sigma_h / sigma_v must lie between the elastic K0 = nu / (1 - nu) = 0.43 and 0.55: the elastic
-// oedometric state lies just outside the plane-strain Drucker-Prager cone for phi = 30 (which
-// admits K >= 0.465 here), so the column yields a little while it settles.
+// 2.7 %, row means within 2.1 % (docs/validation-studies.md). Bounds: the 3 % on the row
+// means, and 3.5 % per particle (a 1.3x margin for the run-to-run variation of the OpenMP summation
+// order). sigma_h / sigma_v must lie between the elastic K0 = nu / (1 - nu) = 0.43 and 0.55: the
+// elastic oedometric state lies just outside the plane-strain Drucker-Prager cone for phi = 30
+// (which admits K >= 0.465 here), so the column yields a little while it settles.
 TEST(SoilCases, SoilColumnCarriesItsWeight) {
   const auto run = run_case("soil_column", {"run.output_interval=0.1"});
   ASSERT_EQ(run.result.exit_code, 0) << run.result.output;

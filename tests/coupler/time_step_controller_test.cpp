@@ -1,4 +1,4 @@
-// Fig. 1 smoothing (DESIGN.md section 4) over single steps and long random sequences.
+// Fig. 1 smoothing (docs/design.md section 4) over single steps and long random sequences.
 #include "coupler/time_step_controller.h"
 
 #include <gtest/gtest.h>

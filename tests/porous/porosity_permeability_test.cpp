@@ -40,7 +40,7 @@ TEST(Porosity, ClampedToThePhysicalRange) {
 }
 
 TEST(Permeability, KozenyCarmanForTheFluidisedBedSand) {
-  // CASES.md fluidized_bed sand: d_e = 0.5125 mm, n = 0.46, nu = 1e-6 m^2/s, g = 9.81 m/s^2.
+  // docs/cases.md fluidized_bed sand: d_e = 0.5125 mm, n = 0.46, nu = 1e-6 m^2/s, g = 9.81 m/s^2.
   //   n^3 = 0.097336, (1 - n)^2 = 0.2916, ratio = 0.33379973
   //   g / nu d_e^2 = 9.81e6 * 2.62656e-7 = 2.57665781 m/s
   //   k = 0.33379973 * 2.57665781 / 180 = 4.77826e-3 m/s,  a = 1/k = 209.281 s/m.
@@ -55,7 +55,7 @@ TEST(Permeability, KozenyCarmanForTheFluidisedBedSand) {
 }
 
 TEST(Permeability, DenAdelForTheRockfillGravel) {
-  // CASES.md rockfill gravel: n = 0.41, d15 = 26 mm, alpha 150, beta 0.4, nu 1e-6, g 9.81:
+  // docs/cases.md rockfill gravel: n = 0.41, d15 = 26 mm, alpha 150, beta 0.4, nu 1e-6, g 9.81:
   //   a = 150 * 0.59^2 / 0.41^3 * 1e-6 / (9.81 * 0.026^2) = 150 * 0.3481 / 0.068921 * 1.50792e-4
   //     = 0.114243 s/m
   //   b = 0.4 / 0.41^2 / (9.81 * 0.026) = 0.4 / 0.1681 / 0.25506 = 9.32932 s^2/m^2

@@ -17,7 +17,7 @@ namespace {
 constexpr double kClosedForm = 1e-13;
 
 TEST(ElasticConstants, YoungPoissonToBulkShearAndBack) {
-  // Bui et al. 2008 granular column (CASES.md): E = 0.84 MPa, nu = 0.3 ->
+  // Bui et al. 2008 granular column (docs/cases.md): E = 0.84 MPa, nu = 0.3 ->
   // K = 0.84e6 / (3 * 0.4) = 0.7 MPa, G = 0.84e6 / 2.6 = 323076.923... Pa.
   const ElasticConstants e = elastic_from_young_poisson(0.84e6, 0.3);
   EXPECT_NEAR(e.bulk_modulus, 0.7e6, 0.7e6 * kClosedForm);
@@ -125,7 +125,7 @@ TEST(DruckerPragerConstants, RejectsInadmissibleAngles) {
 }
 
 TEST(SoilMaterial, FluidisedBedSand) {
-  // CASES.md fluidized_bed sand: E 5 MPa, nu 0.3, phi 22, c 0, psi 0.
+  // docs/cases.md fluidized_bed sand: E 5 MPa, nu 0.3, phi 22, c 0, psi 0.
   // K = 5e6 / 1.2 = 4166666.67 Pa, G = 5e6 / 2.6 = 1923076.92 Pa,
   // alpha = tan 22 / sqrt(9 + 12 tan^2 22) = 0.40402623 / 3.31041482 = 0.122047008473322.
   MaterialParameters p;

@@ -131,7 +131,7 @@ TEST(SoilArtificialViscosity, DissipatesApproachingPairsOnly) {
   // Receding: exactly zero.
   EXPECT_EQ(av.acceleration<2>(m, V2(-approaching), x_ij, x_ij.norm(), c, c, rho, rho, grad),
             V2::Zero());
-  // Sound speed: sqrt(K / (rho_sat - rho_w)) of CASES.md, K = 4.1667 MPa, 1810 - 1000 = 810.
+  // Sound speed: sqrt(K / (rho_sat - rho_w)) of docs/cases.md, K = 4.1667 MPa, 1810 - 1000 = 810.
   EXPECT_NEAR(soil_sound_speed(5e6 / 1.2, 810.0), std::sqrt(5e6 / 1.2 / 810.0), 1e-12);
   EXPECT_NEAR(soil_sound_speed(5e6 / 1.2, 810.0), 71.7219, 1e-4);
 }

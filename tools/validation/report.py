@@ -70,7 +70,7 @@ CASES = [
          "cases/rockfill_overtopping/scene.toml", "rockfill_overtopping",
          overrides=["run.dp=0.02", "run.end_time=300.2", "run.checkpoint_wall_minutes=10"],
          plot=case_plots.rockfill, run_dir="../long/rockfill_q19",
-         notes="dp 0.02 m (half the CASES.md resolution), flume width W = 2.5 m (assumed); run "
+         notes="dp 0.02 m (half the docs/cases.md resolution), flume width W = 2.5 m (assumed); run "
                "towards the experiment's steady state (~300 s), checkpointed."),
     case("rockfill_q30", "Rockfill core overtopping (paper 4.2), Q = 30.45 l/s",
          "cases/rockfill_overtopping/scene.toml", "rockfill_overtopping",
@@ -95,13 +95,13 @@ CASES = [
     for (q, Q) in [(19, 19.36), (30, 30.45)]
 ] + [
     case(f"rockfill_q{q}_w100_dp01", f"Rockfill core overtopping, Q = {Q} l/s, W = 1.0 m, at the "
-         "CASES.md spacing dp = 0.01 m", "cases/rockfill_overtopping/scene.toml",
+         "docs/cases.md spacing dp = 0.01 m", "cases/rockfill_overtopping/scene.toml",
          "rockfill_overtopping",
          overrides=["run.dp=0.01", "run.end_time=300.2", "run.checkpoint_wall_minutes=10",
                     f"water.inflow[0].flow_rate={Q / 1000:.5f}",
                     "water.inflow[0].cross_section=0.04"],
          plot=case_plots.rockfill, run_dir=f"../long/rockfill_q{q}_w100_dp01",
-         notes="dp 0.01 m (the CASES.md spacing, 4 times the particles of dp 0.02 m), W = 1.0 m: "
+         notes="dp 0.01 m (the docs/cases.md spacing, 4 times the particles of dp 0.02 m), W = 1.0 m: "
                "the resolution check of the W = 1.0 m pair (docs/validation-studies.md).")
     for (q, Q) in [(19, 19.36), (30, 30.45)]
 ] + [

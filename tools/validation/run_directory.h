@@ -1,4 +1,5 @@
-// Reading a finished run directory (DESIGN.md section 6) for validation: run.json, timeseries.csv.
+// Reading a finished run directory (docs/design.md section 6) for validation: run.json,
+// timeseries.csv.
 #pragma once
 
 #include <map>
