@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "porous/submerged_density.h"
 #include "scene/scene.h"
 #include "soil_solver/artificial_stress.h"
 #include "soil_solver/elastic_constants.h"
@@ -128,11 +129,7 @@ struct SoilParams {
       c.artificial_stress = m.artificial_stress;
       c.fixed = m.fixed;
       c.wet_cohesion_loss = m.wet_cohesion_loss;
-      if (rho_water > 0.0) {
-        const double saturated =
-            m.saturated_density > 0.0 ? m.saturated_density : m.density + m.porosity * rho_water;
-        c.submerged_ratio = (saturated - rho_water) / m.density;
-      }
+      if (rho_water > 0.0) c.submerged_ratio = porous::submerged_density_ratio(m, rho_water);
       p.materials.push_back(c);
     }
     return p;
