@@ -38,10 +38,16 @@ inline SeepageCoefficients darcy_kozeny_carman(double porosity, double effective
 /// Darcy with a given constant conductivity k: a = 1/k, b = 0.
 inline SeepageCoefficients darcy_constant(double conductivity) { return {1.0 / conductivity, 0.0}; }
 
-/// Forchheimer with Den Adel's coefficients, eq. 15 (alpha 150, beta 0.4 by default).
+/// Den Adel's empirical constants of eq. 15 as the seed paper uses them (the scene's defaults of
+/// den_adel_alpha / den_adel_beta, scene/scene_schema_soil.cpp, say the same).
+inline constexpr double kDenAdelAlpha = 150.0;
+inline constexpr double kDenAdelBeta = 0.4;
+
+/// Forchheimer with Den Adel's coefficients, eq. 15.
 inline SeepageCoefficients forchheimer_den_adel(double porosity, double d15, double gravity,
-                                                double kinematic_viscosity, double alpha = 150.0,
-                                                double beta = 0.4) {
+                                                double kinematic_viscosity,
+                                                double alpha = kDenAdelAlpha,
+                                                double beta = kDenAdelBeta) {
   const double n = porosity;
   SeepageCoefficients c;
   c.a = alpha * (1.0 - n) * (1.0 - n) / (n * n * n) * kinematic_viscosity / (gravity * d15 * d15);

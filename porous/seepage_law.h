@@ -133,7 +133,7 @@ class SeepageLaw {
   double gravity_ = 0.0, nu_ = 0.0;
   double diameter_ = 0.0;      ///< d_e (Kozeny-Carman) or d15 (Den Adel) [m]
   double conductivity_ = 0.0;  ///< k at n0 [m/s]
-  double alpha_ = 150.0, beta_ = 0.4;
+  double alpha_ = kDenAdelAlpha, beta_ = kDenAdelBeta;
 };
 
 }  // namespace porosph::porous
