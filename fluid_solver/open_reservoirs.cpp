@@ -76,6 +76,7 @@ OpenReservoirs<D>::OpenReservoirs(const scene::WaterPhase& water,
   cell_sum_.assign(cells, 0.0);
   cell_n_.assign(cells, 0);
   cell_speed_.assign(cells, 0.0);
+  cell_back_.assign(cells, 0.0);
   find_cell_centres();
   born_.reserve(cells);
 }
@@ -233,7 +234,7 @@ std::size_t OpenReservoirs<D>::renew(FluidParticles<D>& P, double volume, std::i
     ++buffer;
     const long c = cell_of(z, P.position[a]);
     if (c < 0) continue;
-    if (cell_n_[c] == 0 || d < cell_sum_[c]) cell_sum_[c] = d;  // cell_sum_: the hindmost d
+    if (cell_n_[c] == 0 || d < cell_back_[c]) cell_back_[c] = d;
     ++cell_n_[c];
   }
   // One particle per cell and step behind the hindmost where a whole spacing is free up to the
@@ -247,8 +248,8 @@ std::size_t OpenReservoirs<D>::renew(FluidParticles<D>& P, double volume, std::i
       double d;
       if (cell_n_[c] == 0)
         d = -0.5 * dp_;
-      else if (cell_sum_[c] - dp_ >= -z.length - 1e-9 * dp_)
-        d = cell_sum_[c] - dp_;
+      else if (cell_back_[c] - dp_ >= -z.length - 1e-9 * dp_)
+        d = cell_back_[c] - dp_;
       else
         continue;
       Vec x = x0;

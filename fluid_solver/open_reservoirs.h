@@ -140,10 +140,11 @@ class OpenReservoirs {
   TaitEos eos_;
   bool held_ = true;                   ///< inside the damping stage: every buffer at rest
   std::vector<double> cell_sum_;       ///< per cell: sum of v . n of the sampled particles
-  std::vector<std::uint32_t> cell_n_;  ///< per cell: their number
+  std::vector<std::uint32_t> cell_n_;  ///< per cell: their number (renew: buffer particles)
   std::vector<double> cell_speed_;     ///< per cell: u
+  std::vector<double> cell_back_;      ///< per cell: the hindmost buffer particle's signed distance
   std::vector<std::vector<Vec>> cell_centres_;
-  FluidParticles<D> born_;  ///< staging of the replacements
+  FluidParticles<D> born_;  ///< staging of the particles renew() adds
 };
 
 extern template class OpenReservoirs<2>;
