@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -169,13 +170,18 @@ TEST(CheckFuzz, MutatedCaseScenesExitZeroOrTwoAndNoNonFiniteValuePasses) {
   std::mt19937 random(29);
   const auto scenes = case_scenes();
   ASSERT_FALSE(scenes.empty());
+  // ~24 mutations per scene, a few hundred in all; a nightly run raises the total with
+  // POROSPH_CHECK_FUZZ_SCENES (e.g. 10000).
+  const char* env = std::getenv("POROSPH_CHECK_FUZZ_SCENES");
+  const int per_scene =
+      env != nullptr ? std::max(1, std::atoi(env) / static_cast<int>(scenes.size()) + 1) : 24;
   int tried = 0, passed = 0;
   for (const fs::path& scene : scenes) {
     const toml::table original = toml::parse_file(scene.string());
     std::vector<Slot> slots;
     toml::table probe = original;
     collect(probe, slots);
-    for (int i = 0; i < 24; ++i) {  // ~24 mutations per scene, a few hundred in all
+    for (int i = 0; i < per_scene; ++i) {
       toml::table copy = original;
       std::vector<Slot> copy_slots;
       collect(copy, copy_slots);
