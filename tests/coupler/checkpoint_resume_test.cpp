@@ -163,13 +163,16 @@ std::size_t rows_before_checkpoint(const std::string& out) {
   return state.at("loop").at("row_index").get<std::size_t>();
 }
 
-/// Starts the run, SIGKILLs the coupler once the first checkpoint is complete and a row past it is
-/// in timeseries.csv (so the resume must drop output), waits for its solvers to go, and resumes.
+/// Starts the run and, once the first checkpoint is complete and a row past it is in
+/// timeseries.csv (so the resume must drop output), SIGKILLs the coupler (`victim` empty) or the
+/// solver of phase `victim`; checks that everything stops (a killed solver: the coupler exits 1
+/// within 5 s naming the phase and the signal, the other solvers go within 5 s), and resumes.
 /// Returns the resumed run's directory.
-std::string kill_after_checkpoint_and_resume(
-    const std::string& name, std::vector<std::string> (*scene)(const std::string&)) {
+std::string kill_after_checkpoint_and_resume(const std::string& name,
+                                             std::vector<std::string> (*scene)(const std::string&),
+                                             const std::string& victim = "") {
   single_threaded();
-  const std::string dir = fresh_dir("killed-" + name);
+  const std::string dir = fresh_dir("killed-" + name + (victim.empty() ? "" : "-" + victim));
   const std::string out = dir + "/out";
   const pid_t coupler = start_process(scene(out), dir + "/log.txt");
   EXPECT_TRUE(wait_for_file(out + "/checkpoint/latest.json")) << read_text(dir + "/log.txt");
@@ -177,11 +180,25 @@ std::string kill_after_checkpoint_and_resume(
   for (int i = 0; i < 30000 && csv_rows(out + "/timeseries.csv").size() <= kept; ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
-  kill(coupler, SIGKILL);
   EXPECT_GT(csv_rows(out + "/timeseries.csv").size(), kept) << "no output past the checkpoint";
-  EXPECT_EQ(wait_process(coupler, 10.0), -1) << "the run ended before the kill";
-  for (pid_t solver : solver_pids(out)) EXPECT_TRUE(wait_gone(solver, 10.0));
-  EXPECT_NE(read_json(out + "/run.json").at("status"), "completed");
+  if (victim.empty()) {
+    kill(coupler, SIGKILL);
+    EXPECT_EQ(wait_process(coupler, 10.0), -1) << "the run ended before the kill";
+    for (pid_t solver : solver_pids(out)) EXPECT_TRUE(wait_gone(solver, 10.0));
+    EXPECT_NE(read_json(out + "/run.json").at("status"), "completed");
+  } else {
+    const auto phases = read_json(out + "/run.json").at("phases");
+    kill(phases.at(victim).at("pid").get<pid_t>(), SIGKILL);
+    EXPECT_EQ(wait_process(coupler, 5.0), 1) << read_text(dir + "/log.txt");
+    for (const auto& [phase, record] : phases.items()) {
+      EXPECT_TRUE(wait_gone(record.at("pid").get<pid_t>(), 5.0)) << phase << " outlived the run";
+    }
+    const auto failed = read_json(out + "/run.json");
+    EXPECT_EQ(failed.at("status"), "failed");
+    const std::string message = failed.at("message");
+    EXPECT_NE(message.find(victim), std::string::npos) << message;
+    EXPECT_NE(message.find("signal 9"), std::string::npos) << message;
+  }
   const CommandResult resumed =
       run_process({bin("coupler"), "run", "--resume", out, "--no-progress"}, dir + "/resume.txt");
   EXPECT_EQ(resumed.exit_code, 0) << resumed.output;
@@ -261,6 +278,20 @@ TEST(CheckpointResume, KilledCoupledRunResumesSoilStateAndLedger) {
   expect_same_snapshots(reference, out, "soil.h5",
                         {"position", "velocity", "density", "stress", "porosity", "plastic_strain",
                          "displacement", "saturation"});
+}
+
+// Issue 24 (hardening): a solver killed with SIGKILL in the middle of a coupled run stops the
+// whole run cleanly, and the resume from the last checkpoint ends where the run left alone does.
+TEST(CheckpointResume, KilledSolverStopsTheCoupledRunAndTheResumeMatches) {
+  const std::string& reference = reference_run("fluidized_bed", fluidized_bed_run);
+  const std::string out =
+      kill_after_checkpoint_and_resume("fluidized_bed", fluidized_bed_run, "water");
+  const auto record = read_json(out + "/run.json");
+  EXPECT_EQ(record.at("status"), "completed");
+  EXPECT_EQ(record.at("steps"), read_json(reference + "/run.json").at("steps"));
+  expect_same_timeseries(reference, out);
+  expect_same_snapshots(reference, out, "fluid.h5", {"position", "velocity", "density"});
+  expect_same_snapshots(reference, out, "soil.h5", {"position", "velocity", "stress", "porosity"});
 }
 
 TEST(CheckpointResume, SigtermWritesACheckpointAndTheResumeCompletes) {
