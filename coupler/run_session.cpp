@@ -70,6 +70,10 @@ class RunSession {
   void handshake();
   void check_interrupt() const;
   void check_solvers_alive();
+  /// "the PHASE solver (pid N) killed by signal 9 ... at step S, t = T s".
+  std::string dead_solver_message(const std::string& phase, const SolverProcess& p) const;
+  /// The run's failure message for an exception with message `what`.
+  std::string failure_reason(const std::string& what);
   void shut_down_after_failure(const std::string& reason);
   void write_outputs();
   /// Rewrites run.json (its heartbeat with it).
@@ -225,13 +229,24 @@ void RunSession::check_interrupt() const {
 }
 
 void RunSession::check_solvers_alive() {
-  for (auto& [phase, process] : processes_) {
-    if (!process->running()) {
-      throw RunFailure("the " + phase + " solver (pid " + std::to_string(process->pid()) + ") " +
-                       process->exit_description() + " at step " + std::to_string(record_.steps) +
-                       ", t = " + std::to_string(record_.time) + " s");
-    }
-  }
+  std::string phase;
+  if (SolverProcess* dead = exited_solver(processes_, &phase, 0.0))
+    throw RunFailure(dead_solver_message(phase, *dead));
+}
+
+std::string RunSession::dead_solver_message(const std::string& phase,
+                                            const SolverProcess& p) const {
+  return "the " + phase + " solver (pid " + std::to_string(p.pid()) + ") " + p.exit_description() +
+         " at step " + std::to_string(record_.steps) + ", t = " + std::to_string(record_.time) +
+         " s";
+}
+
+std::string RunSession::failure_reason(const std::string& what) {
+  // A solver that died is the reason, not the lost connection the coupler met first.
+  if (what.find("cannot send to the") == std::string::npos) return what;
+  std::string phase;
+  SolverProcess* dead = exited_solver(processes_, &phase, 2.0);
+  return dead != nullptr ? dead_solver_message(phase, *dead) + " (" + what + ")" : what;
 }
 
 void RunSession::handshake() {
@@ -364,8 +379,8 @@ int RunSession::run() {
     exit_code = kBadInput;
   } catch (const std::exception& e) {
     record_.status = "failed";
-    record_.message = e.what();
-    shut_down_after_failure(e.what());
+    record_.message = failure_reason(e.what());
+    shut_down_after_failure(record_.message);
     exit_code = kRunFailed;
   }
   processes_.clear();  // terminates and reaps anything still running

@@ -7,7 +7,9 @@
 
 #include <sys/types.h>
 
+#include <chrono>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace porosph::coupler {
@@ -41,6 +43,24 @@ class SolverProcess {
   bool exited_ = false;
   int status_ = 0;
 };
+
+/// The solver of `phase` among `processes` that has exited, waiting up to `grace_seconds` for one
+/// to be reaped (a lost connection is noticed before the exit status); nullptr if none did.
+template <class ProcessMap>
+SolverProcess* exited_solver(ProcessMap& processes, std::string* phase, double grace_seconds) {
+  const auto deadline = std::chrono::steady_clock::now() +
+                        std::chrono::microseconds(static_cast<long long>(grace_seconds * 1e6));
+  for (;;) {
+    for (auto& [name, process] : processes) {
+      if (!process->running()) {
+        *phase = name;
+        return process.get();
+      }
+    }
+    if (std::chrono::steady_clock::now() >= deadline) return nullptr;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+}
 
 /// Finds a solver executable: an absolute/relative path with a slash is used as is; a bare name is
 /// looked up next to the running coupler executable first, then on PATH. Returns "" if not found.
