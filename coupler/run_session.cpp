@@ -18,6 +18,7 @@
 
 #include "coupler/checkpoint.h"
 #include "coupler/coupled_step.h"
+#include "coupler/coupled_step_clock.h"
 #include "coupler/progress_line.h"
 #include "coupler/run_directory.h"
 #include "coupler/run_record.h"
@@ -33,7 +34,6 @@ namespace porosph::coupler {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
 
 /// Set by SIGINT/SIGTERM; the only process-wide state, as a signal handler can reach nothing else.
 /// The step loop takes (and clears) it, so that a second signal is seen as such.
@@ -49,10 +49,6 @@ struct RunFailure : std::runtime_error {
 struct BadInput : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 class RunSession {
  public:
@@ -70,10 +66,8 @@ class RunSession {
   void handshake();
   void check_interrupt() const;
   void check_solvers_alive();
-  /// "the PHASE solver (pid N) killed by signal 9 ... at step S, t = T s".
-  std::string dead_solver_message(const std::string& phase, const SolverProcess& p) const;
-  /// The run's failure message for an exception with message `what`.
-  std::string failure_reason(const std::string& what);
+  /// The run's failure message for `e`: a solver found dead after a lost connection is named.
+  std::string failure_reason(const std::exception& e);
   void shut_down_after_failure(const std::string& reason);
   void write_outputs();
   /// Rewrites run.json (its heartbeat with it).
@@ -90,7 +84,7 @@ class RunSession {
   std::string out_dir_;
   std::unique_ptr<PrivateSocketDir> socket_dir_;  ///< the default socket's; outlives hub_
   std::unique_ptr<SolverHub> hub_;
-  std::map<std::string, std::unique_ptr<SolverProcess>> processes_;
+  SolverProcesses processes_;
   std::optional<LoopState> resumed_;         ///< set when resuming
   std::set<std::string> phases_without_h5_;  ///< phases whose solver wrote no snapshot file
 };
@@ -231,22 +225,16 @@ void RunSession::check_interrupt() const {
 void RunSession::check_solvers_alive() {
   std::string phase;
   if (SolverProcess* dead = exited_solver(processes_, &phase, 0.0))
-    throw RunFailure(dead_solver_message(phase, *dead));
+    throw RunFailure(dead_solver_message(phase, *dead, record_.steps, record_.time));
 }
 
-std::string RunSession::dead_solver_message(const std::string& phase,
-                                            const SolverProcess& p) const {
-  return "the " + phase + " solver (pid " + std::to_string(p.pid()) + ") " + p.exit_description() +
-         " at step " + std::to_string(record_.steps) + ", t = " + std::to_string(record_.time) +
-         " s";
-}
-
-std::string RunSession::failure_reason(const std::string& what) {
+std::string RunSession::failure_reason(const std::exception& e) {
   // A solver that died is the reason, not the lost connection the coupler met first.
-  if (what.find("cannot send to the") == std::string::npos) return what;
+  if (dynamic_cast<const SolverUnreachable*>(&e) == nullptr) return e.what();
   std::string phase;
   SolverProcess* dead = exited_solver(processes_, &phase, 2.0);
-  return dead != nullptr ? dead_solver_message(phase, *dead) + " (" + what + ")" : what;
+  if (dead == nullptr) return e.what();
+  return dead_solver_message(phase, *dead, record_.steps, record_.time) + " (" + e.what() + ")";
 }
 
 void RunSession::handshake() {
@@ -319,9 +307,7 @@ void RunSession::shut_down_after_failure(const std::string& reason) {
       }
     }
   }
-  for (auto& [phase, process] : processes_) {
-    if (!process->wait_for_exit(2.0)) process->terminate(2.0);
-  }
+  stop_solvers(processes_, 2.0);
 }
 
 void RunSession::write_outputs() {
@@ -369,9 +355,7 @@ int RunSession::run() {
     ProgressLine progress(scene_.run.end_time, options_.progress);
     loop.run(progress);
     record_.status = "completed";
-    for (auto& [phase, process] : processes_) {
-      if (!process->wait_for_exit(10.0)) process->terminate(2.0);
-    }
+    stop_solvers(processes_, 10.0);
   } catch (const BadInput& e) {
     record_.status = "failed";
     record_.message = e.what();
@@ -379,7 +363,7 @@ int RunSession::run() {
     exit_code = kBadInput;
   } catch (const std::exception& e) {
     record_.status = "failed";
-    record_.message = failure_reason(e.what());
+    record_.message = failure_reason(e);
     shut_down_after_failure(record_.message);
     exit_code = kRunFailed;
   }

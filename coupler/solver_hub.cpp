@@ -15,6 +15,7 @@
 #include <utility>
 #include <zmq.hpp>
 
+#include "coupler/coupled_step_clock.h"
 #include "coupler/dropped_messages.h"
 #include "coupler/run_token.h"
 #include "proto/porosph.pb.h"
@@ -26,16 +27,10 @@
 namespace porosph::coupler {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
 /// On shutdown the coupler waits at most this long to deliver its last messages.
 constexpr int kLingerMilliseconds = 1000;
 /// A send blocks only if a solver stopped reading with many messages queued; give up after this.
 constexpr int kSendTimeoutMilliseconds = 10000;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 std::string_view view(const zmq::message_t& frame) {
   return {static_cast<const char*>(frame.data()), frame.size()};
@@ -158,11 +153,11 @@ struct SolverHub::Impl {
     try {
       if (!socket.send(zmq::buffer(peer), zmq::send_flags::sndmore) ||
           !socket.send(payload, zmq::send_flags::none)) {
-        throw std::runtime_error("cannot send to the " + phase + " solver: it stopped reading");
+        throw SolverUnreachable("cannot send to the " + phase + " solver: it stopped reading");
       }
     } catch (const zmq::error_t& e) {
       if (e.num() == EHOSTUNREACH) {
-        throw std::runtime_error("cannot send to the " + phase + " solver: it disconnected");
+        throw SolverUnreachable("cannot send to the " + phase + " solver: it disconnected");
       }
       throw std::runtime_error("cannot send to the " + phase + " solver: " + e.what());
     }

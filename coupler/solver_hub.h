@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "coupler/hub_endpoint.h"
@@ -14,6 +15,13 @@
 namespace porosph::coupler {
 
 /// A message that arrived from one solver.
+/// A send to a solver failed because its connection is gone (it disconnected or stopped
+/// reading): usually the sign of a solver that died, which the caller can then look for.
+class SolverUnreachable : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 struct Incoming {
   enum class Kind { Hello, State, Error, Goodbye };
   Kind kind = Kind::State;

@@ -224,4 +224,31 @@ std::string find_solver_executable(const std::string& name_or_path) {
   return search_path(name_or_path);
 }
 
+void stop_solvers(SolverProcesses& processes, double seconds) {
+  for (auto& [phase, process] : processes)
+    if (!process->wait_for_exit(seconds)) process->terminate(2.0);
+}
+
+SolverProcess* exited_solver(SolverProcesses& processes, std::string* phase, double grace_seconds) {
+  const auto deadline = std::chrono::steady_clock::now() +
+                        std::chrono::microseconds(static_cast<long long>(grace_seconds * 1e6));
+  for (;;) {
+    for (auto& [name, process] : processes) {
+      if (!process->running()) {
+        *phase = name;
+        return process.get();
+      }
+    }
+    if (std::chrono::steady_clock::now() >= deadline) return nullptr;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+}
+
+std::string dead_solver_message(const std::string& phase, const SolverProcess& process,
+                                std::uint64_t step, double time) {
+  return "the " + phase + " solver (pid " + std::to_string(process.pid()) + ") " +
+         process.exit_description() + " at step " + std::to_string(step) +
+         ", t = " + std::to_string(time) + " s";
+}
+
 }  // namespace porosph::coupler

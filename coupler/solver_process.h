@@ -7,9 +7,10 @@
 
 #include <sys/types.h>
 
-#include <chrono>
+#include <cstdint>
+#include <map>
+#include <memory>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace porosph::coupler {
@@ -44,23 +45,20 @@ class SolverProcess {
   int status_ = 0;
 };
 
-/// The solver of `phase` among `processes` that has exited, waiting up to `grace_seconds` for one
-/// to be reaped (a lost connection is noticed before the exit status); nullptr if none did.
-template <class ProcessMap>
-SolverProcess* exited_solver(ProcessMap& processes, std::string* phase, double grace_seconds) {
-  const auto deadline = std::chrono::steady_clock::now() +
-                        std::chrono::microseconds(static_cast<long long>(grace_seconds * 1e6));
-  for (;;) {
-    for (auto& [name, process] : processes) {
-      if (!process->running()) {
-        *phase = name;
-        return process.get();
-      }
-    }
-    if (std::chrono::steady_clock::now() >= deadline) return nullptr;
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-}
+using SolverProcesses = std::map<std::string, std::unique_ptr<SolverProcess>>;
+
+/// The first of `processes` (by phase) that has exited, waiting up to `grace_seconds` for one to
+/// be reaped (a lost connection can be noticed before the exit status); its phase in `phase`, or
+/// nullptr if none did.
+SolverProcess* exited_solver(SolverProcesses& processes, std::string* phase, double grace_seconds);
+
+/// Waits up to `seconds` for each solver to exit, and terminates (SIGTERM, then SIGKILL after 2 s)
+/// any that does not.
+void stop_solvers(SolverProcesses& processes, double seconds);
+
+/// "the PHASE solver (pid N) killed by signal 9 (Killed) at step S, t = T s".
+std::string dead_solver_message(const std::string& phase, const SolverProcess& process,
+                                std::uint64_t step, double time);
 
 /// Finds a solver executable: an absolute/relative path with a slash is used as is; a bare name is
 /// looked up next to the running coupler executable first, then on PATH. Returns "" if not found.
