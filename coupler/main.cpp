@@ -6,6 +6,7 @@
 //   coupler status DIR                running / completed / failed / died (docs/reliability.md)
 //   coupler check SCENE.toml [--set ...] [--out DIR] [--force-size]   validate, estimate the size
 //   coupler schema --markdown                the scene key reference (docs/scene.md)
+//   coupler schema --terms                   the physics terms and their switches (docs/terms.md)
 // clang-format on
 // Exit codes of run: 0 completed, 1 the run failed, 2 bad input (a busy or unwritable run
 // directory, or one holding an earlier run without --overwrite, included). Of status: 0 completed,
@@ -18,6 +19,7 @@
 #include "coupler/run_status.h"
 #include "coupler/scene_check.h"
 #include "scene/scene_loader.h"
+#include "scene/term_registry.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"PoroSPH coupler: runs water and soil SPH solvers as coupled processes"};
@@ -71,6 +73,9 @@ int main(int argc, char** argv) {
   bool markdown = false;
   auto* schema = app.add_subcommand("schema", "print the reference of every scene key");
   schema->add_flag("--markdown", markdown, "as Markdown (the content of docs/scene.md)");
+  bool terms = false;
+  schema->add_flag("--terms", terms,
+                   "the physics terms, what switches them and their keys (docs/terms.md)");
 
   try {
     app.parse(argc, argv);
@@ -106,7 +111,8 @@ int main(int argc, char** argv) {
     return report.code;
   }
   if (*schema) {
-    std::cout << porosph::scene::scene_reference_markdown();
+    std::cout << (terms ? porosph::scene::term_reference_markdown()
+                        : porosph::scene::scene_reference_markdown());
     return 0;
   }
   return porosph::coupler::kBadInput;

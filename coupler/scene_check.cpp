@@ -3,6 +3,7 @@
 #include "coupler/block_lattice.h"
 #include "coupler/run_size.h"
 #include "scene/scene_loader.h"
+#include "scene/term_registry.h"
 
 namespace porosph::coupler {
 namespace {
@@ -49,7 +50,22 @@ int check_scene(const CheckOptions& options, std::ostream& out, std::ostream& er
   if (!problem.empty()) err << "coupler: warning (--force-size): " << problem << "\n";
   out << "# " << options.scene_path << ": valid scene '" << scene.name << "' (phases:";
   for (const auto& phase : scene.phases()) out << " " << phase;
-  out << ")\n# size: " << describe_run_size(size) << "\n" << scene.resolved_toml << "\n";
+  out << ")\n# size: " << describe_run_size(size) << "\n";
+  for (const std::string phase : {"water", "soil", "interaction"}) {
+    const std::vector<std::string> terms = scene::active_terms(scene, phase);
+    if (terms.empty()) continue;
+    const std::string own_solver = phase == "water"  ? scene.water->solver
+                                   : phase == "soil" ? scene.soil->solver
+                                                     : std::string();
+    if (!own_solver.empty()) {  // a replacement solver declares its terms when it starts
+      out << "# " << phase << " terms: declared by " << own_solver << " at its start\n";
+      continue;
+    }
+    out << "# " << phase << " terms:";
+    for (const auto& term : terms) out << " " << term;
+    out << "\n";
+  }
+  out << scene.resolved_toml << "\n";
   return 0;
 }
 

@@ -9,6 +9,7 @@
 #include "fluid_solver/artificial_viscosity.h"
 #include "fluid_solver/equation_of_state.h"
 #include "scene/scene.h"
+#include "scene/term_registry.h"
 #include "sph/vector.h"
 
 namespace porosph::fluid {
@@ -23,9 +24,10 @@ struct FluidParams {
   ArtificialViscosity artificial;  ///< Monaghan 1992 (alpha = beta = 0: off)
   double eta2 = 0.0;               ///< 0.01 h^2, regularisation of 1/r terms
   sph::Vec<D> gravity = sph::Vec<D>::Zero();
-  bool no_slip = true;             ///< walls: mirrored velocity in viscous terms; false: excluded
-  int density_filter_every = 0;    ///< Shepard filter period in steps (0: off)
-  double density_diffusion = 0.0;  ///< delta of the density diffusion term (0: off)
+  bool no_slip = true;              ///< walls: mirrored velocity in viscous terms; false: excluded
+  bool artificial_at_walls = true;  ///< the Monaghan term also at no-slip walls
+  int density_filter_every = 0;     ///< Shepard filter period in steps (0: off)
+  double density_diffusion = 0.0;   ///< delta of the density diffusion term (0: off)
   /// The diffusion leaves any linear departure potential alone (density_diffusion_gradient.h);
   /// false: only still water (water.density_diffusion_correction = "hydrostatic").
   bool diffusion_linear = true;
@@ -63,18 +65,21 @@ struct FluidParams {
                                   " but run.dimension = " + std::to_string(s.run.dimension));
     }
     const scene::WaterPhase& w = *s.water;
+    const scene::TermSwitches on(s, "water");  // the registry decides what runs
     FluidParams p;
     p.dp = s.run.dp;
     p.h = s.h();
     p.volume = std::pow(p.dp, D);
     p.eos = TaitEos(w.rho0, w.sound_speed, w.gamma);
-    p.mu = w.viscosity;
+    p.mu = on("morris_viscosity") ? w.viscosity : 0.0;
     p.eta2 = 0.01 * p.h * p.h;
-    p.artificial = ArtificialViscosity{w.alpha, w.beta, p.h, 0.0};
-    if (w.artificial_viscosity_in_soil == "drag_limited") {
+    p.artificial = on("artificial_viscosity") ? ArtificialViscosity{w.alpha, w.beta, p.h, 0.0}
+                                              : ArtificialViscosity{0.0, 0.0, p.h, 0.0};
+    if (on("artificial_viscosity_drag_limited")) {
       p.artificial.damping_rate =
           ArtificialViscosity::kernel_damping_rate(w.alpha, w.sound_speed, p.h, D);
-    } else if (w.artificial_viscosity_in_soil != "full") {
+    } else if (w.artificial_viscosity_in_soil != "full" &&
+               w.artificial_viscosity_in_soil != "drag_limited") {
       throw std::invalid_argument(
           "water.artificial_viscosity_in_soil: expected drag_limited or full, got '" +
           w.artificial_viscosity_in_soil + "'");
@@ -85,10 +90,11 @@ struct FluidParams {
                                   w.wall_condition + "'");
     }
     p.no_slip = w.wall_condition == "no_slip";
-    p.density_filter_every = w.density_filter_every;
-    p.density_diffusion = w.density_diffusion;
+    p.artificial_at_walls = on("artificial_viscosity_at_walls");
+    p.density_filter_every = on("shepard_density_filter") ? w.density_filter_every : 0;
+    p.density_diffusion = on("density_diffusion") ? w.density_diffusion : 0.0;
     p.diffusion_linear = w.density_diffusion_correction == "linear";
-    p.particle_shifting = w.particle_shifting;
+    p.particle_shifting = on("particle_shifting") ? w.particle_shifting : 0.0;
     p.euler_every = s.run.euler_every;
     p.cfl = s.run.cfl;
     p.c_a = s.run.c_a;
@@ -101,7 +107,7 @@ struct FluidParams {
           "water.pressure_gradient_in_soil: expected symmetric or hydrostatic_difference, got '" +
           w.pressure_gradient_in_soil + "'");
     }
-    p.hydrostatic_difference_in_soil = w.pressure_gradient_in_soil == "hydrostatic_difference";
+    p.hydrostatic_difference_in_soil = on("pressure_gradient_hydrostatic_difference_in_soil");
     p.drag_share_rate = ArtificialViscosity::kernel_damping_rate(w.alpha, w.sound_speed, p.h, D);
     return p;
   }

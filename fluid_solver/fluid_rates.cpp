@@ -40,6 +40,7 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
   const double* scale = P.gradient_scale.data();  // particle_gradient.h: 1 unless "particle"
   const double mu = prm.mu, eta2 = prm.eta2;
   const ArtificialViscosity av = prm.artificial;
+  const bool av_at_walls = prm.artificial_at_walls;
   const Vec g = prm.gravity;
   const Vec rho0_g = prm.eos.rho0() * g;  // hydrostatic_difference.h
   const bool hydrostatic_difference = prm.hydrostatic_difference_in_soil;
@@ -139,8 +140,9 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
               morris_viscous_acceleration<D>(m[b], mu, mu, inv_rho_a, inv_rho[b], factor, v_ab));
         }
         if constexpr (kArtificial) {
-          add_wall_term(av.acceleration<D>(m[b], v_ab, it->x_ab, inv_r2_eta2, c_a, c[b], rho_a,
-                                           rho[b], grad_w, 1.0 - av_cut_weight * cut[a]));
+          if (av_at_walls)
+            add_wall_term(av.acceleration<D>(m[b], v_ab, it->x_ab, inv_r2_eta2, c_a, c[b], rho_a,
+                                             rho[b], grad_w, 1.0 - av_cut_weight * cut[a]));
         }
       }
     }

@@ -40,6 +40,7 @@ class StopWatch {
 template <int D>
 FluidSolver<D>::FluidSolver(const scene::Scene& s)
     : params_(FluidParams<D>::from_scene(s)),
+      terms_(scene::active_terms(s, "water")),
       box_(sph::DomainBox<D>::from_scene(s, 2.0 * params_.h)),
       cubic_(sph::make_kernel<sph::CubicSpline<D>>(params_.h, s.run.dp,
                                                    s.run.kernel_gradient != "plain")),
@@ -70,30 +71,6 @@ FluidSolver<D>::FluidSolver(const scene::Scene& s)
     particles_.reserve(particles_.position.capacity() + 4 * reservoirs_.column_count());
   neighbours_.set_skin(sph::kSolverSkinFraction * 2.0 * params_.h);
   reorder_by_cell();
-}
-
-template <int D>
-std::vector<std::string> FluidSolver<D>::active_terms() const {
-  std::vector<std::string> terms = {"continuity", "pressure_gradient", "gravity"};
-  if (params_.morris_on()) terms.push_back("morris_viscosity");
-  if (params_.artificial_on()) {
-    terms.push_back("artificial_viscosity");
-    if (params_.artificial.damping_rate > 0.0) terms.push_back("artificial_viscosity_drag_limited");
-  }
-  if (params_.hydrostatic_difference_in_soil)
-    terms.push_back("pressure_gradient_hydrostatic_difference_in_soil");
-  if (params_.diffusion_on()) terms.push_back("density_diffusion");
-  if (params_.shifting_on()) terms.push_back("particle_shifting");
-  if (particles_.wall_count() > 0)
-    terms.push_back(params_.no_slip ? "walls_no_slip" : "walls_free_slip");
-  if (params_.density_filter_every > 0) terms.push_back("shepard_density_filter");
-  if (zones_.inflow_count() > 0) terms.push_back("inflow");
-  if (zones_.has_outflows()) terms.push_back("outflow");
-  if (reservoirs_.count() > 0) terms.push_back("reservoir");
-  if (open_.count() > 0) terms.push_back("open_reservoir");
-  if (box_.any_periodic()) terms.push_back("periodic");
-  if (damping_.duration() > 0.0) terms.push_back("damping_stage_freeze");
-  return terms;
 }
 
 template <int D>

@@ -15,9 +15,9 @@
 #include "fluid_solver/fluid_params.h"
 #include "fluid_solver/fluid_particles.h"
 #include "fluid_solver/moving_walls.h"
+#include "fluid_solver/open_reservoirs.h"
 #include "fluid_solver/particle_shifting.h"
 #include "fluid_solver/pore_fields.h"
-#include "fluid_solver/open_reservoirs.h"
 #include "fluid_solver/reservoirs.h"
 #include "fluid_solver/water_impulse_book.h"
 #include "io/checkpoint_file.h"
@@ -83,7 +83,8 @@ class FluidSolver {
   std::vector<io::FieldView> snapshot_fields() const;
   /// The physics terms this solver evaluates for its scene (run.json phases.water.terms): the
   /// same predicates that select the compiled pair loop (fluid_rates.cpp) and the optional stages.
-  std::vector<std::string> active_terms() const;
+  /// The terms the registry switches on for the scene (scene/term_registry.h).
+  const std::vector<std::string>& active_terms() const { return terms_; }
   /// The sources of the external impulses reported with each state (water_impulse_book.h).
   std::vector<std::string> impulse_sources() const { return water_impulse_sources(); }
   /// The external impulses of the last advance() (zero before the first), by source.
@@ -134,6 +135,7 @@ class FluidSolver {
   double evaluate(const sph::PreparedObservable<D>& o, const sph::ParticleView<D>& view) const;
 
   FluidParams<D> params_;
+  std::vector<std::string> terms_;
   sph::DomainBox<D> box_;
   KernelKind kernel_kind_ = KernelKind::CubicSpline;
   sph::CubicSpline<D> cubic_;
@@ -141,7 +143,7 @@ class FluidSolver {
   DampingStage damping_;
   FlowZones<D> zones_;
   Reservoirs<D> reservoirs_;
-  OpenReservoirs<D> open_;  ///< zone codes after the inflow zones'
+  OpenReservoirs<D> open_;       ///< zone codes after the inflow zones'
   MovingWalls<D> moving_walls_;  ///< [[walls]] with moves_with
   std::vector<sph::PreparedObservable<D>> observables_;
 

@@ -128,8 +128,11 @@ struct WaterPhase {
   double taylor_green_speed = 0.0;         ///< amplitude U of the Taylor-Green field [m/s]
   double taylor_green_wavelength = 0.0;    ///< its wavelength L = 2 pi / k [m]
   std::string wall_condition = "no_slip";  ///< "no_slip" | "free_slip"
-  std::string solver;                      ///< executable; empty: the built-in fluid_solver
-  std::vector<Shape> blocks;               ///< regions filled with water at t = 0
+  /// Monaghan term also between water and no-slip wall particles (mirrored velocity); false:
+  /// between water particles only, the no-slip condition from the Morris term alone
+  bool artificial_viscosity_at_walls = true;
+  std::string solver;         ///< executable; empty: the built-in fluid_solver
+  std::vector<Shape> blocks;  ///< regions filled with water at t = 0
   std::vector<InflowZone> inflows;
   std::vector<OutflowZone> outflows;
   std::vector<ReservoirZone> reservoirs;

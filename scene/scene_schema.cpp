@@ -5,6 +5,7 @@
 #include "scene/scene_schema.h"
 
 #include "scene/scene_schema_builder.h"
+#include "scene/term_registry.h"
 
 namespace porosph::scene {
 namespace schema_detail {
@@ -156,79 +157,10 @@ void add_water(SceneSchema& s) {
                        .above(0)
                        .doc("Numerical sound speed c of the Tait equation (eq. 4); at least 10 "
                             "times the largest expected speed."));
-  s.keys.push_back(Key("water.viscosity", T::Float)
-                       .unit("Pa s")
-                       .fallback("0.001")
-                       .at_least(0)
-                       .doc("Dynamic viscosity mu (Morris 1997 laminar term); 0 switches it off."));
-  s.keys.push_back(Key("water.alpha", T::Float)
-                       .fallback("0.05")
-                       .at_least(0)
-                       .doc("Monaghan artificial viscosity alpha; 0 switches it off."));
-  s.keys.push_back(Key("water.beta", T::Float)
-                       .fallback("0.0")
-                       .at_least(0)
-                       .doc("Monaghan artificial viscosity beta."));
-  s.keys.push_back(
-      Key("water.artificial_viscosity_in_soil", T::String)
-          .fallback("\"drag_limited\"")
-          .one_of({"drag_limited", "full"})
-          .doc("The artificial viscosity inside soil. \"drag_limited\": the share "
-               "min(1, lambda / r_av) of it is removed at a water particle whose seepage drag "
-               "rate lambda (from the coupler) approaches the rate r_av = alpha c pi^2 / "
-               "(2 (D + 2) h) at which it damps kernel-scale noise, so the noise is damped at "
-               "least as fast as without soil and a Darcy flow feels no artificial viscosity "
-               "(fluid_solver/artificial_viscosity.h); \"full\": everywhere as in free water "
-               "(the discharge under the seepage weir 2 % lower at dp 10 mm)."));
-  s.keys.push_back(
-      Key("water.pressure_gradient_in_soil", T::String)
-          .fallback("\"symmetric\"")
-          .one_of({"symmetric", "hydrostatic_difference"})
-          .doc("The pressure gradient of the water inside soil. \"symmetric\": the seed paper's "
-               "form everywhere; \"hydrostatic_difference\": where the seepage drag holds the "
-               "particles (the drag share of water.artificial_viscosity_in_soil) and the kernel "
-               "support is full, the difference form of the departure from still water plus "
-               "rho0 g, exact for still water at any particle arrangement, so that the Darcy flow "
-               "does not pay for the lattice's strain (the vertical seepage is ~30 times as "
-               "sensitive to the operator as the pressure) and the sand's water lattice does not "
-               "collapse; water momentum is then not conserved pair by pair inside soil "
-               "(fluid_solver/hydrostatic_difference.h, docs/coupling.md)."));
   s.keys.push_back(Key("water.gamma", T::Float)
                        .fallback("7.0")
                        .at_least(1)
                        .doc("Exponent of the Tait equation of state (eq. 4)."));
-  s.keys.push_back(Key("water.density_filter_every", T::Int)
-                       .fallback("0")
-                       .at_least(0)
-                       .doc("Shepard density re-initialisation every this many steps; 0: off."));
-  s.keys.push_back(Key("water.density_diffusion", T::Float)
-                       .fallback("0.1")
-                       .at_least(0)
-                       .at_most(1)
-                       .doc("delta of the density diffusion term added to the continuity equation "
-                            "(Molteni & Colagrossi 2009), between water particles; 0 switches it "
-                            "off. 0.1 is the standard value."));
-  s.keys.push_back(
-      Key("water.density_diffusion_correction", T::String)
-          .fallback("\"linear\"")
-          .one_of({"linear", "hydrostatic"})
-          .doc("What the density diffusion leaves alone. \"hydrostatic\": still weakly "
-               "compressible water (the departure of the EOS enthalpy from the gravity "
-               "potential is diffused; fluid_solver/density_diffusion.h); \"linear\": any "
-               "linear departure as well, a steady seepage flow included (Antuono et al. 2010, "
-               "with a renormalised gradient; one more neighbour pass). With \"hydrostatic\" "
-               "the diffusion carries part of a seepage discharge: the water in a fluidised bed "
-               "moved 2.5 % slower than Q / A."));
-  s.keys.push_back(Key("water.particle_shifting", T::Float)
-                       .fallback("0.0")
-                       .at_least(0)
-                       .doc("A of the Fickian particle shifting of Lind et al. (2012) with the "
-                            "speed scale of Sun et al. (2017): after each step a water particle "
-                            "moves by -A h U_max dt grad C (C the particle concentration, with "
-                            "Monaghan's tensile term, U_max the largest water speed), velocity and "
-                            "density unchanged (fluid_solver/particle_shifting.h); keeps the "
-                            "particles uniform in strained flows; 0 switches it off. No "
-                            "free-surface treatment: confined or periodic water only."));
   s.keys.push_back(
       Key("water.hydrostatic_initial", T::Bool)
           .fallback("true")
@@ -264,10 +196,6 @@ void add_water(SceneSchema& s) {
                        .only_when("initial_velocity", {"taylor_green"})
                        .doc("Wavelength L = 2 pi / k of the Taylor-Green vortex: a periodic L x L "
                             "box holds one period (four vortices)."));
-  s.keys.push_back(Key("water.wall_condition", T::String)
-                       .fallback("\"no_slip\"")
-                       .one_of({"no_slip", "free_slip"})
-                       .doc("Velocity condition at wall particles."));
   s.keys.push_back(Key("water.solver", T::String)
                        .fallback("\"\"")
                        .doc("Executable of the water solver; empty: the built-in fluid_solver."));
@@ -345,6 +273,7 @@ SceneSchema make_scene_schema() {
   add_soil(schema);
   add_coupling(schema);
   add_walls_and_observables(schema);
+  add_term_keys(schema);  // the keys each physics term owns (scene/term_registry.h)
   return schema;
 }
 

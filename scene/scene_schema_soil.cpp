@@ -14,27 +14,6 @@ void add_soil_settings(SceneSchema& s) {
   s.keys.push_back(Key("soil.solver", T::String)
                        .fallback("\"\"")
                        .doc("Executable of the soil solver; empty: the built-in soil_solver."));
-  s.keys.push_back(Key("soil.wall_condition", T::String)
-                       .fallback("\"no_slip\"")
-                       .one_of({"no_slip", "free_slip"})
-                       .doc("Velocity condition at wall particles."));
-  s.keys.push_back(Key("soil.alpha", T::Float)
-                       .fallback("0.1")
-                       .at_least(0)
-                       .doc("Monaghan artificial viscosity alpha; 0 switches it off."));
-  s.keys.push_back(Key("soil.beta", T::Float)
-                       .fallback("0.1")
-                       .at_least(0)
-                       .doc("Monaghan artificial viscosity beta."));
-  s.keys.push_back(Key("soil.artificial_stress_epsilon", T::Float)
-                       .fallback("0.5")
-                       .at_least(0)
-                       .doc("Gray-Monaghan artificial stress coefficient epsilon (materials with "
-                            "artificial_stress = true)."));
-  s.keys.push_back(Key("soil.artificial_stress_exponent", T::Float)
-                       .fallback("2.55")
-                       .above(0)
-                       .doc("Exponent n of the artificial stress, f = (W(r) / W(dp))^n."));
   s.keys.push_back(
       Key("soil.sound_speed", T::Float)
           .unit("m/s")
@@ -43,42 +22,6 @@ void add_soil_settings(SceneSchema& s) {
           .doc(
               "Numerical sound speed (time-step limit, artificial viscosity); 0: "
               "from the stiffest material, max sqrt((K + 4 G / 3) / density) (the P-wave speed)."));
-  s.keys.push_back(
-      Key("soil.initial_stress", T::String)
-          .fallback("\"none\"")
-          .one_of({"geostatic", "none"})
-          .doc("geostatic: at-rest stress from the weight of the soil above, "
-               "horizontal = k0 vertical; none: zero stress (use damping to settle)."));
-  s.keys.push_back(Key("soil.k0", T::String)
-                       .fallback("\"jaky\"")
-                       .one_of({"jaky", "elastic"})
-                       .doc("Earth pressure coefficient at rest for geostatic initial stress: "
-                            "jaky, K0 = 1 - sin(phi); elastic, K0 = nu / (1 - nu)."));
-  s.keys.push_back(Key("soil.damping_duration", T::Float)
-                       .unit("s")
-                       .fallback("0.0")
-                       .at_least(0)
-                       .doc("Length of the initial damping (dynamic relaxation) stage; 0: none."));
-  s.keys.push_back(Key("soil.damping_coefficient", T::Float)
-                       .fallback("0.02")
-                       .at_least(0)
-                       .doc("Damping during that stage: D = coefficient sqrt(E / (density h^2)) "
-                            "[1/s]."));
-  s.keys.push_back(Key("soil.stress_filter_every", T::Int)
-                       .fallback("0")
-                       .at_least(0)
-                       .doc("Filter of the soil stress every N steps (stress regularisation, "
-                            "Nguyen et al. 2017; weights: soil.stress_filter); removes the "
-                            "row-to-row stress oscillation the pair form of eq. 5 cannot see; "
-                            "0: off."));
-  s.keys.push_back(
-      Key("soil.stress_filter", T::String)
-          .fallback("\"mls\"")
-          .one_of({"shepard", "mls"})
-          .doc("Weights of that filter (within one material, then back onto the yield cone): "
-               "shepard, the kernel average (exact for a constant stress; near a free face it "
-               "hands a particle the stress of the deeper rows); mls, a first-order moving "
-               "least squares fit (exact for a linearly varying stress, also at free faces)."));
 }
 
 void add_soil_materials(SceneSchema& s) {
@@ -155,17 +98,6 @@ void add_soil_materials(SceneSchema& s) {
                "strain: eq10, the seed paper's constants, exact at plastic flow only for "
                "associated flow (psi = phi); flow_rule, exact for the material's own psi (psi = "
                "0: alpha_phi = sin(phi) / 3, k_c = c cos(phi); a wider cone than eq10)."));
-  s.keys.push_back(Key(m + "artificial_stress", T::Bool)
-                       .fallback("false")
-                       .doc("Gray-Monaghan artificial stress against tensile instability."));
-  s.keys.push_back(Key(m + "fixed", T::Bool)
-                       .fallback("false")
-                       .doc("A rigid porous bed: its particles never move (water still seeps "
-                            "through)."));
-  s.keys.push_back(Key(m + "wet_cohesion_loss", T::Bool)
-                       .fallback("false")
-                       .doc("Cohesion vanishes once the particle is wet, its stress scaled back "
-                            "onto the new yield surface (rockfill)."));
 }
 
 void add_seepage(SceneSchema& s) {
@@ -205,13 +137,6 @@ void add_seepage(SceneSchema& s) {
                        .above(0)
                        .only_when("seepage", {"forchheimer_den_adel"})
                        .doc("Den Adel coefficient beta of the quadratic term (eq. 15)."));
-  s.keys.push_back(
-      Key(m + "variable_permeability", T::Bool)
-          .fallback("true")
-          .only_when("seepage",
-                     {"darcy_kozeny_carman", "darcy_conductivity", "forchheimer_den_adel"})
-          .doc("The seepage coefficients follow the current porosity of each particle (eq. 20); "
-               "false: they keep their value at n0."));
 }
 
 void add_soil_blocks(SceneSchema& s) {

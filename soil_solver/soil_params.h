@@ -10,6 +10,7 @@
 
 #include "porous/submerged_density.h"
 #include "scene/scene.h"
+#include "scene/term_registry.h"
 #include "soil_solver/artificial_stress.h"
 #include "soil_solver/elastic_constants.h"
 #include "soil_solver/geostatic_stress.h"
@@ -80,25 +81,28 @@ struct SoilParams {
                                   " but run.dimension = " + std::to_string(s.run.dimension));
     }
     const scene::SoilPhase& soil = *s.soil;
+    const scene::TermSwitches on(s, "soil");  // the registry decides what runs
     SoilParams p;
     p.dp = s.run.dp;
     p.h = s.h();
     p.volume = std::pow(p.dp, D);
     p.gravity = sph::to_vec<D>(s.run.gravity, "run.gravity");
     p.sound_speed = soil.effective_sound_speed();
-    p.viscosity = SoilArtificialViscosity{soil.alpha, soil.beta, p.h};
+    p.viscosity = on("artificial_viscosity") ? SoilArtificialViscosity{soil.alpha, soil.beta, p.h}
+                                             : SoilArtificialViscosity{0.0, 0.0, p.h};
     p.artificial_stress = {soil.artificial_stress_epsilon, soil.artificial_stress_exponent};
     if (soil.wall_condition != "no_slip" && soil.wall_condition != "free_slip") {
       throw std::invalid_argument("soil.wall_condition: expected no_slip or free_slip, got '" +
                                   soil.wall_condition + "'");
     }
     p.no_slip = soil.wall_condition == "no_slip";
-    p.geostatic_initial = soil.initial_stress == "geostatic";
-    p.damping_duration = soil.damping_duration;
+    p.geostatic_initial = on("geostatic_initial_stress");
+    p.damping_duration = on("damping_stage") ? soil.damping_duration : 0.0;
     p.damping_coefficient = soil.damping_coefficient;
     p.cfl = s.run.cfl;
     p.c_a = s.run.c_a;
-    p.stress_filter_every = soil.stress_filter_every;
+    p.stress_filter_every =
+        on("mls_stress_filter") || on("shepard_stress_filter") ? soil.stress_filter_every : 0;
     p.stress_filter =
         soil.stress_filter == "shepard" ? StressFilterKind::Shepard : StressFilterKind::Mls;
     p.submerged_saturation = s.coupling.submerged_saturation;

@@ -28,6 +28,7 @@ constexpr std::uint64_t kReorderEvery = 100;
 template <int D>
 SoilSolver<D>::SoilSolver(const scene::Scene& s)
     : params_(SoilParams<D>::from_scene(s)),
+      terms_(scene::active_terms(s, "soil")),
       box_(sph::DomainBox<D>::from_scene(s, 2.0 * params_.h)),
       cubic_(sph::make_kernel<sph::CubicSpline<D>>(params_.h, s.run.dp,
                                                    s.run.kernel_gradient != "plain")),
@@ -123,24 +124,6 @@ SoilSolver<D>::SoilSolver(const scene::Scene& s)
   loads_.tag(P, params_.dp, params_.materials);
   neighbours_.set_skin(sph::kSolverSkinFraction * 2.0 * params_.h);
   reorder_by_cell();
-}
-
-template <int D>
-std::vector<std::string> SoilSolver<D>::active_terms() const {
-  std::vector<std::string> terms = {"stress_divergence", "gravity", "velocity_gradient",
-                                    "jaumann_stress_rate", "drucker_prager_return"};
-  if (params_.viscosity_on()) terms.push_back("artificial_viscosity");
-  if (params_.any_artificial_stress()) terms.push_back("artificial_stress");
-  if (params_.stress_filter_every > 0)
-    terms.push_back(params_.stress_filter == StressFilterKind::Mls ? "mls_stress_filter"
-                                                                   : "shepard_stress_filter");
-  if (params_.any_wet_cohesion_loss()) terms.push_back("wet_cohesion_loss");
-  if (particles_.n_free < particles_.size()) terms.push_back("walls");
-  if (params_.geostatic_initial) terms.push_back("geostatic_initial_stress");
-  if (params_.damping_duration > 0.0) terms.push_back("damping_stage");
-  if (box_.any_periodic()) terms.push_back("periodic");
-  if (!loads_.empty()) terms.push_back("surface_loads");
-  return terms;
 }
 
 template <int D>

@@ -77,7 +77,8 @@ class SoilSolver {
   std::vector<io::FieldView> snapshot_fields() const;
   /// The physics terms this solver evaluates for its scene (run.json phases.soil.terms): the same
   /// predicates that select the compiled pair loops (soil_rates.cpp) and the optional stages.
-  std::vector<std::string> active_terms() const;
+  /// The terms the registry switches on for the scene (scene/term_registry.h).
+  const std::vector<std::string>& active_terms() const { return terms_; }
   /// The sources of the external impulses reported with each state (soil_impulse_book.h).
   std::vector<std::string> impulse_sources() const { return soil_impulse_sources(); }
   /// The external impulses of the last advance() (zero before the first), by source.
@@ -113,6 +114,7 @@ class SoilSolver {
   double evaluate(const sph::PreparedObservable<D>& o, const sph::ParticleView<D>& view) const;
 
   SoilParams<D> params_;
+  std::vector<std::string> terms_;
   sph::DomainBox<D> box_;
   KernelKind kernel_kind_ = KernelKind::CubicSpline;
   sph::CubicSpline<D> cubic_;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "coupler/interaction/soil_water_sums.h"
+#include "scene/term_registry.h"
 #include "sph/kernels.h"
 
 namespace porosph::coupler {
@@ -58,25 +59,6 @@ std::unique_ptr<InteractionEngine> make_engine(const scene::Scene& s, int thread
 
 }  // namespace
 
-std::vector<std::string> interaction_terms(const scene::SoilPhase& soil, bool implicit_drag) {
-  std::vector<std::string> terms = {"saturation", "submerged_density"};
-  auto add = [&](const std::string& term) {
-    if (std::find(terms.begin(), terms.end(), term) == terms.end()) terms.push_back(term);
-  };
-  for (const scene::SoilMaterial& m : soil.materials) {
-    if (m.seepage == "none") continue;
-    add("seepage_force");
-    add("seepage_" + m.seepage);
-    if (m.variable_permeability) add("variable_permeability");
-  }
-  for (const scene::SoilMaterial& m : soil.materials) {
-    if (m.wet_cohesion_loss) add("wet_marking");
-    if (m.fixed) add("fixed_bed");
-  }
-  if (terms.size() > 2 && implicit_drag) add("implicit_drag");
-  return terms;
-}
-
 SoilWaterInteraction::SoilWaterInteraction(const scene::Scene& scene, int threads)
     : dimension_(scene.run.dimension) {
   if (!scene.has_water() || !scene.has_soil()) {
@@ -92,7 +74,7 @@ SoilWaterInteraction::SoilWaterInteraction(const scene::Scene& scene, int thread
   damping_duration_ = scene.soil->damping_duration;
   implicit_drag_ = scene.coupling.implicit_drag;
   material_count_ = scene.soil->materials.size();
-  terms_ = interaction_terms(*scene.soil, scene.coupling.implicit_drag);
+  terms_ = scene::active_terms(scene, "interaction");
   out_.force_on_water.assign(dimension_, 0.0);
   out_.force_on_soil.assign(dimension_, 0.0);
 }

@@ -68,12 +68,6 @@ struct InteractionSummary {
   double dt_limit = std::numeric_limits<double>::infinity();
 };
 
-/// The terms the interaction evaluates for these soil materials: "saturation" and
-/// "submerged_density" always; "seepage_force" and "seepage_<law>" for each law in use (eq.
-/// 13-15), "variable_permeability" (eq. 20) where a material with a law has it, "wet_marking"
-/// (wet_cohesion_loss materials), "fixed_bed", "implicit_drag" (with a seepage law).
-std::vector<std::string> interaction_terms(const scene::SoilPhase& soil, bool implicit_drag);
-
 class SoilWaterInteraction {
  public:
   /// Reads h, the kernel, run.c_a, gravity, the periodic domain, the water's rho0 and viscosity
@@ -120,7 +114,7 @@ class SoilWaterInteraction {
   /// without implicit drag) to a step command, by swapping buffers like hand_over(): the water
   /// solver scales its artificial viscosity by them (fluid_solver/artificial_viscosity.h).
   void hand_over_water_rate(std::vector<double>& rate) { rate.swap(out_.water_rate); }
-  /// The interaction terms of the scene (run.json interaction.terms; interaction_terms()).
+  /// The interaction terms of the scene (run.json interaction.terms; scene/term_registry.h).
   const std::vector<std::string>& terms() const { return terms_; }
 
  private:

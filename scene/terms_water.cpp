@@ -1,0 +1,214 @@
+// The water phase's terms (scene/term_registry.h): one registration per term, with the keys it
+// owns and its switch. The solver's code for each term is named in its summary.
+#include <algorithm>
+
+#include "scene/scene_schema_builder.h"
+#include "scene/term_registry.h"
+
+namespace porosph::scene::term_detail {
+namespace {
+
+using schema_detail::Key;
+using schema_detail::T;
+
+const WaterPhase& water(const Scene& s) { return *s.water; }
+bool has_water_walls(const Scene& s) { return !s.walls_acting_on("water").empty(); }
+bool artificial_on(const Scene& s) { return water(s).alpha > 0.0 || water(s).beta > 0.0; }
+bool no_slip(const Scene& s) { return water(s).wall_condition == "no_slip"; }
+bool any_reservoir(const Scene& s, bool open) {
+  const auto& r = water(s).reservoirs;
+  return std::any_of(r.begin(), r.end(),
+                     [open](const ReservoirZone& z) { return (z.boundary == "open") == open; });
+}
+
+TermSpec term(std::string name, std::string summary, std::string runs_when,
+              std::function<bool(const Scene&)> active, std::vector<KeySpec> keys = {}) {
+  return {std::move(name),      "water",         std::move(summary),
+          std::move(runs_when), std::move(keys), std::move(active)};
+}
+
+bool always(const Scene&) { return true; }
+
+}  // namespace
+
+bool any_periodic(const Scene& s) {
+  return std::find(s.run.periodic.begin(), s.run.periodic.end(), true) != s.run.periodic.end();
+}
+
+namespace {}  // namespace
+
+void add_water_terms(std::vector<TermSpec>& t) {
+  t.push_back(term("continuity",
+                   "Continuity equation of weakly compressible water (seed paper eq. 2); "
+                   "fluid_solver/continuity.h.",
+                   "always", always));
+  t.push_back(term("pressure_gradient",
+                   "Symmetric pressure gradient of the momentum equation (eq. 3) with the Tait "
+                   "equation of state (eq. 4); fluid_solver/pressure_force.h, "
+                   "equation_of_state.h.",
+                   "always", always));
+  t.push_back(term("gravity", "Body force run.gravity.", "always", always));
+  t.push_back(
+      term("morris_viscosity",
+           "Laminar viscous term of Morris, Fox & Zhu (1997); "
+           "fluid_solver/viscosity_morris.h.",
+           "water.viscosity > 0", [](const Scene& s) { return water(s).viscosity > 0.0; },
+           {Key("water.viscosity", T::Float)
+                .unit("Pa s")
+                .fallback("0.001")
+                .at_least(0)
+                .doc("Dynamic viscosity mu (Morris 1997 laminar term); 0 switches it off.")}));
+  t.push_back(term("artificial_viscosity",
+                   "Monaghan (1992) artificial viscosity between water particles; "
+                   "fluid_solver/artificial_viscosity.h.",
+                   "water.alpha > 0 or water.beta > 0", artificial_on,
+                   {Key("water.alpha", T::Float)
+                        .fallback("0.05")
+                        .at_least(0)
+                        .doc("Monaghan artificial viscosity alpha; 0 switches it off."),
+                    Key("water.beta", T::Float)
+                        .fallback("0.0")
+                        .at_least(0)
+                        .doc("Monaghan artificial viscosity beta.")}));
+  t.push_back(term(
+      "artificial_viscosity_drag_limited",
+      "The artificial viscosity yields to the seepage drag inside soil, by the "
+      "share min(1, lambda / r_av); fluid_solver/artificial_viscosity.h.",
+      "water.alpha > 0 and water.artificial_viscosity_in_soil = \"drag_limited\"",
+      [](const Scene& s) {
+        return water(s).alpha > 0.0 && water(s).artificial_viscosity_in_soil == "drag_limited";
+      },
+      {Key("water.artificial_viscosity_in_soil", T::String)
+           .fallback("\"drag_limited\"")
+           .one_of({"drag_limited", "full"})
+           .doc("The artificial viscosity inside soil. \"drag_limited\": the share "
+                "min(1, lambda / r_av) of it is removed at a water particle whose seepage drag "
+                "rate lambda (from the coupler) approaches the rate r_av = alpha c pi^2 / "
+                "(2 (D + 2) h) at which it damps kernel-scale noise, so the noise is damped at "
+                "least as fast as without soil and a Darcy flow feels no artificial viscosity "
+                "(fluid_solver/artificial_viscosity.h); \"full\": everywhere as in free water "
+                "(the discharge under the seepage weir 2 % lower at dp 10 mm).")}));
+  t.push_back(term(
+      "artificial_viscosity_at_walls",
+      "The artificial viscosity also between water and no-slip wall particles, "
+      "with the mirrored wall velocity; fluid_solver/fluid_rates.cpp.",
+      "artificial_viscosity, walls acting on water, water.wall_condition = "
+      "\"no_slip\" and water.artificial_viscosity_at_walls = true",
+      [](const Scene& s) {
+        return artificial_on(s) && has_water_walls(s) && no_slip(s) &&
+               water(s).artificial_viscosity_at_walls;
+      },
+      {Key("water.artificial_viscosity_at_walls", T::Bool)
+           .fallback("true")
+           .doc("Whether the Monaghan artificial viscosity also acts between water and no-slip "
+                "wall particles (with the mirrored wall velocity). There it is a numerical wall "
+                "friction of kinematic viscosity about alpha h c / 8, hundreds of times water's, "
+                "that shrinks with h (docs/validation-studies.md, dam break, Cause 1); false: "
+                "between water particles only, and the no-slip condition comes from the physical "
+                "viscous term (water.viscosity, Adami et al. 2012) alone.")}));
+  t.push_back(term(
+      "pressure_gradient_hydrostatic_difference_in_soil",
+      "Inside soil, the difference form of the departure from still water plus "
+      "rho0 g where the drag holds the particles; "
+      "fluid_solver/hydrostatic_difference.h.",
+      "water.pressure_gradient_in_soil = \"hydrostatic_difference\"",
+      [](const Scene& s) { return water(s).pressure_gradient_in_soil == "hydrostatic_difference"; },
+      {Key("water.pressure_gradient_in_soil", T::String)
+           .fallback("\"symmetric\"")
+           .one_of({"symmetric", "hydrostatic_difference"})
+           .doc("The pressure gradient of the water inside soil. \"symmetric\": the seed paper's "
+                "form everywhere; \"hydrostatic_difference\": where the seepage drag holds the "
+                "particles (the drag share of water.artificial_viscosity_in_soil) and the kernel "
+                "support is full, the difference form of the departure from still water plus "
+                "rho0 g, exact for still water at any particle arrangement, so that the Darcy flow "
+                "does not pay for the lattice's strain (the vertical seepage is ~30 times as "
+                "sensitive to the operator as the pressure) and the sand's water lattice does not "
+                "collapse; water momentum is then not conserved pair by pair inside soil "
+                "(fluid_solver/hydrostatic_difference.h, docs/coupling.md).")}));
+  t.push_back(term(
+      "density_diffusion",
+      "Density diffusion of the continuity equation (Molteni & Colagrossi 2009; "
+      "Antuono et al. 2010); fluid_solver/density_diffusion.h.",
+      "water.density_diffusion > 0",
+      [](const Scene& s) { return water(s).density_diffusion > 0.0; },
+      {Key("water.density_diffusion", T::Float)
+           .fallback("0.1")
+           .at_least(0)
+           .at_most(1)
+           .doc("delta of the density diffusion term added to the continuity equation "
+                "(Molteni & Colagrossi 2009), between water particles; 0 switches it "
+                "off. 0.1 is the standard value."),
+
+       Key("water.density_diffusion_correction", T::String)
+           .fallback("\"linear\"")
+           .one_of({"linear", "hydrostatic"})
+           .doc("What the density diffusion leaves alone. \"hydrostatic\": still weakly "
+                "compressible water (the departure of the EOS enthalpy from the gravity "
+                "potential is diffused; fluid_solver/density_diffusion.h); \"linear\": any "
+                "linear departure as well, a steady seepage flow included (Antuono et al. 2010, "
+                "with a renormalised gradient; one more neighbour pass). With \"hydrostatic\" "
+                "the diffusion carries part of a seepage discharge: the water in a fluidised bed "
+                "moved 2.5 % slower than Q / A.")}));
+  t.push_back(
+      term("particle_shifting",
+           "Fickian particle shifting (Lind et al. 2012; Sun et al. 2017); "
+           "fluid_solver/particle_shifting.h.",
+           "water.particle_shifting > 0",
+           [](const Scene& s) { return water(s).particle_shifting > 0.0; },
+           {Key("water.particle_shifting", T::Float)
+                .fallback("0.0")
+                .at_least(0)
+                .doc("A of the Fickian particle shifting of Lind et al. (2012) with the "
+                     "speed scale of Sun et al. (2017): after each step a water particle "
+                     "moves by -A h U_max dt grad C (C the particle concentration, with "
+                     "Monaghan's tensile term, U_max the largest water speed), velocity and "
+                     "density unchanged (fluid_solver/particle_shifting.h); keeps the "
+                     "particles uniform in strained flows; 0 switches it off. No "
+                     "free-surface treatment: confined or periodic water only.")}));
+  t.push_back(term("walls_no_slip",
+                   "Wall particles (Adami, Hu & Adams 2012): extrapolated pressure, mirrored "
+                   "velocity in the viscous terms; fluid_solver/wall_boundary.h.",
+                   "walls acting on water and water.wall_condition = \"no_slip\"",
+                   [](const Scene& s) { return has_water_walls(s) && no_slip(s); },
+                   {Key("water.wall_condition", T::String)
+                        .fallback("\"no_slip\"")
+                        .one_of({"no_slip", "free_slip"})
+                        .doc("Velocity condition at wall particles.")}));
+  t.push_back(term("walls_free_slip",
+                   "Wall particles with extrapolated pressure, left out of the viscous terms; "
+                   "fluid_solver/wall_boundary.h.",
+                   "walls acting on water and water.wall_condition = \"free_slip\"",
+                   [](const Scene& s) { return has_water_walls(s) && !no_slip(s); }));
+  t.push_back(term("shepard_density_filter",
+                   "Shepard re-initialisation of the density; fluid_solver/density_filter.h.",
+                   "water.density_filter_every > 0",
+                   [](const Scene& s) { return water(s).density_filter_every > 0; },
+                   {Key("water.density_filter_every", T::Int)
+                        .fallback("0")
+                        .at_least(0)
+                        .doc("Shepard density re-initialisation every this many steps; 0: off.")}));
+  t.push_back(term("inflow", "Inflow zones ([[water.inflow]]); fluid_solver/flow_zones.h.",
+                   "any [[water.inflow]]",
+                   [](const Scene& s) { return !water(s).inflows.empty(); }));
+  t.push_back(term("outflow", "Outflow zones ([[water.outflow]]); fluid_solver/flow_zones.h.",
+                   "any [[water.outflow]]",
+                   [](const Scene& s) { return !water(s).outflows.empty(); }));
+  t.push_back(term("reservoir",
+                   "Constant-head reservoirs refilled at their surface; "
+                   "fluid_solver/reservoirs.h.",
+                   "any [[water.reservoir]] with boundary = \"surface\"",
+                   [](const Scene& s) { return any_reservoir(s, false); }));
+  t.push_back(term("open_reservoir",
+                   "Constant-head reservoirs open across a face (buffer at the still-water "
+                   "pressure of the level; Tafuni et al. 2018); fluid_solver/open_reservoirs.h.",
+                   "any [[water.reservoir]] with boundary = \"open\"",
+                   [](const Scene& s) { return any_reservoir(s, true); }));
+  t.push_back(term("periodic", "Periodic domain axes; sph/domain_box.h.", "any run.periodic axis",
+                   any_periodic));
+  t.push_back(term("damping_stage_freeze",
+                   "The water is frozen while the soil settles; fluid_solver/damping_stage.h.",
+                   "soil.damping_duration > 0",
+                   [](const Scene& s) { return s.soil && s.soil->damping_duration > 0.0; }));
+}
+
+}  // namespace porosph::scene::term_detail
