@@ -144,6 +144,10 @@ void CoupledStepLoop::absorb_state(const std::string& phase, coupling::StepState
         << reported.mass << ", dt limit " << state.dt_limit << ")";
     throw std::runtime_error(msg.str());
   }
+  for (const coupling::OutputField& field : reported.output_fields) {
+    if (const std::string bad = output_field_problem(field, scene_.run.dimension); !bad.empty())
+      throw std::runtime_error("the " + phase + " solver declared a bad output field: " + bad);
+  }
   // Completes the state from the previous one where the message left parts out (a delta); arrays
   // sent whole are swapped in, not copied.
   coupling::apply_state_delta(states_[phase], state, scene_.run.dimension, phase);
@@ -151,7 +155,8 @@ void CoupledStepLoop::absorb_state(const std::string& phase, coupling::StepState
   PhaseRecord& phase_record = record_.phases[phase];
   if (record_.steps == 0) phase_record.initial = d;
   phase_record.last = d;
-  if (!d.terms.empty()) phase_record.terms = d.terms;         // sent with the first state only
+  if (!d.terms.empty()) phase_record.terms = d.terms;  // sent with the first state only
+  if (!d.output_fields.empty()) phase_record.output_fields = d.output_fields;  // and these
   phase_record.external.add(d, scene_.run.dimension, phase);  // the last advance's impulses
   phase_record.reported.wall_seconds += d.wall_seconds;
   phase_record.reported.physics_seconds += d.physics_seconds;

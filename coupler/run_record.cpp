@@ -3,6 +3,7 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -86,6 +87,13 @@ json phase_json(const PhaseRecord& p) {
   out["final"] = diagnostics_json(p.last);
   out["snapshots"] = p.snapshots.size();
   out["terms"] = p.terms;
+  json fields = json::array();
+  for (const coupling::OutputField& f : p.output_fields)
+    fields.push_back({{"name", f.name},
+                      {"components", f.components},
+                      {"type", f.number_type},
+                      {"unit", f.unit}});
+  out["output_fields"] = fields;  // as the solver declared them (empty: none declared)
   const coupling::Timing timing = phase_timing(p);
   out["wall_seconds"] = {{"total", number(timing.wall_seconds)},
                          {"physics", number(timing.physics_seconds)},
@@ -310,15 +318,46 @@ std::vector<io::XdmfPhaseSeries> xdmf_series(const RunRecord& record, const std:
       }
       continue;
     }
-    // The built-in water solver also writes the pore fields where the scene has soil; another
-    // water solver need not.
-    const bool pore_fields = phase == "water" && record.phases.count("soil") > 0 &&
-                             phase_record.solver_name == kBuiltInWaterSolverName;
     series.push_back({phase, phase_record.h5_file, record.dimension,
-                      snapshot_fields_of_phase(phase, record.dimension, pore_fields),
-                      phase_record.snapshots});
+                      xdmf_fields_of(record, phase_record), phase_record.snapshots});
   }
   return series;
+}
+
+std::string output_field_problem(const coupling::OutputField& field, int dimension) {
+  const auto name_char = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '-';
+  };
+  if (field.name.empty() || field.name.size() > 64 || field.name == "position" ||
+      !std::all_of(field.name.begin(), field.name.end(), name_char))
+    return "name '" + field.name + "' (1-64 of A-Z a-z 0-9 _ . -, not position)";
+  const auto d = static_cast<std::uint32_t>(dimension);
+  if (field.components != 1 && field.components != d && field.components != 9)
+    return field.name + ": " + std::to_string(field.components) + " components (1, " +
+           std::to_string(d) + " or 9)";
+  if (field.number_type != "Float" && field.number_type != "Int" && field.number_type != "UChar")
+    return field.name + ": type '" + field.number_type + "' (Float, Int or UChar)";
+  const auto unit_char = [](char c) {
+    return std::isprint(static_cast<unsigned char>(c)) && c != '"' && c != '<' && c != '>' &&
+           c != '&';
+  };
+  if (field.unit.size() > 32 || !std::all_of(field.unit.begin(), field.unit.end(), unit_char))
+    return field.name + ": unit '" + field.unit + "'";
+  return "";
+}
+
+std::vector<io::XdmfField> xdmf_fields_of(const RunRecord& record, const PhaseRecord& phase) {
+  if (phase.output_fields.empty()) {
+    // The built-in water solver also writes the pore fields where the scene has soil; another
+    // water solver need not.
+    const bool pore_fields = phase.phase == "water" && record.phases.count("soil") > 0 &&
+                             phase.solver_name == kBuiltInWaterSolverName;
+    return snapshot_fields_of_phase(phase.phase, record.dimension, pore_fields);
+  }
+  std::vector<io::XdmfField> fields;
+  for (const coupling::OutputField& f : phase.output_fields)
+    fields.push_back({f.name, f.components, f.number_type});
+  return fields;
 }
 
 std::vector<io::XdmfField> snapshot_fields_of_phase(const std::string& phase, int dimension,

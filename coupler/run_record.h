@@ -73,7 +73,9 @@ struct PhaseRecord {
   std::vector<io::XdmfSnapshot> snapshots;
   coupling::Timing timing;  ///< the solver's Goodbye: this process only (not earlier segments)
   std::vector<std::string> terms;  ///< the physics terms the solver reported (run.json)
-  bool finished = false;           ///< said Goodbye
+  /// The fields of its snapshot file the solver declared (first state); empty: none declared.
+  std::vector<coupling::OutputField> output_fields;
+  bool finished = false;  ///< said Goodbye
   /// Summed from the per-state reports over all the run's segments (checkpointed).
   coupling::Timing reported;
   /// `reported` at the checkpoint this segment resumed from: the earlier segments' share.
@@ -167,6 +169,16 @@ void write_run_json(const std::string& path, const RunRecord& record);
 /// first time, remembered in `phases_without_h5`).
 std::vector<io::XdmfPhaseSeries> xdmf_series(const RunRecord& record, const std::string& out_dir,
                                              std::set<std::string>& phases_without_h5);
+
+/// The fields run.xdmf lists for a phase: those its solver declared, or, for a solver that
+/// declared none, snapshot_fields_of_phase() (with the pore fields where the built-in water
+/// solver runs in a scene with soil).
+std::vector<io::XdmfField> xdmf_fields_of(const RunRecord& record, const PhaseRecord& phase);
+
+/// What is wrong with a field a solver declared (empty: nothing): its name must be a dataset name
+/// run.xdmf can carry ([A-Za-z0-9_.-], not "position"), components 1, D or 9, the type Float,
+/// Int or UChar, the unit printable without quotes or angle brackets.
+std::string output_field_problem(const coupling::OutputField& field, int dimension);
 
 /// The fields each built-in phase writes besides position (docs/design.md section 6); with
 /// `pore_fields` the water's porosity and pore_velocity too (the built-in water solver in a scene

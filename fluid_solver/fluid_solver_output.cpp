@@ -41,9 +41,10 @@ template <int D>
 std::vector<io::FieldView> FluidSolver<D>::snapshot_fields() const {
   const FluidParticles<D>& P = particles_;
   const std::size_t n = P.size();
-  auto f64 = [n](const char* name, std::size_t cols, const double* data) {
+  auto f64 = [n](const char* name, std::size_t cols, const double* data, const char* unit) {
     io::FieldView f;
     f.name = name;
+    f.unit = unit;
     f.rows = n;
     f.cols = cols;
     f.f64 = data;
@@ -51,11 +52,11 @@ std::vector<io::FieldView> FluidSolver<D>::snapshot_fields() const {
     return f;
   };
   std::vector<io::FieldView> fields;
-  fields.push_back(f64("position", D, n ? P.position[0].data() : nullptr));
-  fields.push_back(f64("velocity", D, n ? P.velocity[0].data() : nullptr));
-  fields.push_back(f64("density", 1, P.density.data()));
-  fields.push_back(f64("pressure", 1, P.pressure.data()));
-  fields.push_back(f64("mass", 1, P.mass.data()));  // varies: rho(t = 0) dp^D
+  fields.push_back(f64("position", D, n ? P.position[0].data() : nullptr, "m"));
+  fields.push_back(f64("velocity", D, n ? P.velocity[0].data() : nullptr, "m/s"));
+  fields.push_back(f64("density", 1, P.density.data(), "kg/m^3"));
+  fields.push_back(f64("pressure", 1, P.pressure.data(), "Pa"));
+  fields.push_back(f64("mass", 1, P.mass.data(), "kg"));  // varies: rho(t = 0) dp^D
   io::FieldView id;
   id.name = "id";
   id.rows = n;

@@ -54,6 +54,7 @@ class PoreFields {
     pore.cols = D;
     pore.f64 = pore_velocity_.empty() ? nullptr : pore_velocity_[0].data();
     pore.type = io::FieldType::F64;
+    pore.unit = "m/s";
     fields.push_back(pore);
   }
 

@@ -37,6 +37,19 @@ FieldView make_view(const std::string& name, const std::vector<T>& values, std::
 }
 
 /// The element type a field will be written with, after checking the view is well formed.
+FieldType checked_type(const FieldView& field, const std::string& where);
+
+}  // namespace
+
+FieldType stored_type(const FieldView& field) {
+  if (field.f64 != nullptr) return FieldType::F64;
+  if (field.i64 != nullptr) return FieldType::I64;
+  if (field.u8 != nullptr) return FieldType::U8;
+  return field.type;
+}
+
+namespace {
+
 FieldType checked_type(const FieldView& field, const std::string& where) {
   const int pointers_set = (field.f64 != nullptr) + (field.i64 != nullptr) + (field.u8 != nullptr);
   if (pointers_set > 1) throw std::runtime_error(where + ": more than one data pointer is set");

@@ -33,7 +33,13 @@ struct FieldView {
   /// The field holds the same values in every snapshot of the file (a rigid skeleton's position,
   /// its zero stress): the first write stores it as /static/<name>, every snapshot links it there.
   bool unchanging = false;
+  /// SI unit, for the field list the solver declares (run.json, docs); empty: none.
+  std::string unit;
 };
+
+/// The element type a field's dataset gets (from its data pointer or `type`); FromPointer for an
+/// empty field that says neither.
+FieldType stored_type(const FieldView& field);
 
 /// Views of a row-major array of rows x cols values (rows = values.size() / cols); they set `type`,
 /// so they also work for empty vectors. Throw std::runtime_error if values.size() % cols != 0.

@@ -44,6 +44,14 @@ struct SetupData {
   std::uint32_t resume_output_index = 0;
 };
 
+/// One per-particle field of a solver's snapshot file (porosph.proto, OutputField).
+struct OutputField {
+  std::string name;
+  std::uint32_t components = 1;       ///< 1, D or 9
+  std::string number_type = "Float";  ///< "Float" | "Int" | "UChar"
+  std::string unit;                   ///< SI; empty: none
+};
+
 struct Diagnostics {
   std::uint64_t particle_count = 0, free_count = 0, removed_count = 0;
   double mass = 0, kinetic_energy = 0, max_speed = 0;
@@ -63,6 +71,8 @@ struct Diagnostics {
   /// The momentum the books balance where it is not `momentum` (the soil: sum m^s v, m^s the
   /// effective mass of its equation of motion); empty: `momentum`.
   std::vector<double> balance_momentum;
+  /// The fields of the solver's snapshot file besides position (first state only, like terms).
+  std::vector<OutputField> output_fields;
 };
 
 /// What a received state message left out (proto/state_delta.h). Solvers leave it at its

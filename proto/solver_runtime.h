@@ -89,6 +89,23 @@ void write_snapshot(io::SnapshotWriter& writer, Solver& solver, const StepComman
   writer.write(command.output_index, solver.time(), solver.snapshot_fields());
 }
 
+/// The fields of a solver's snapshots besides position, as it declares them with its first state
+/// (porosph.proto, OutputField): run.xdmf and run.json list them.
+inline std::vector<coupling::OutputField> declared_output_fields(
+    const std::vector<io::FieldView>& fields) {
+  std::vector<coupling::OutputField> declared;
+  for (const io::FieldView& f : fields) {
+    if (f.name == "position") continue;  // the geometry of every snapshot
+    const io::FieldType type = io::stored_type(f);
+    declared.push_back({f.name, static_cast<std::uint32_t>(f.cols),
+                        type == io::FieldType::I64  ? "Int"
+                        : type == io::FieldType::U8 ? "UChar"
+                                                    : "Float",
+                        f.unit});
+  }
+  return declared;
+}
+
 /// True for a solver with active_terms() (the names reported with the first state).
 template <class Solver, class = void>
 struct has_active_terms : std::false_type {};
@@ -216,6 +233,7 @@ int run_solver_loop_unguarded(CouplingClient& client, Solver& solver, io::Snapsh
   if constexpr (has_active_terms<Solver>::value) state.diagnostics.terms = solver.active_terms();
   if constexpr (has_impulse_sources<Solver>::value)
     state.diagnostics.impulse_sources = solver.impulse_sources();
+  state.diagnostics.output_fields = declared_output_fields(solver.snapshot_fields());
   for (;;) {
     if (rates_pending && !timed(state_is_finite)) return 1;
     timed([&] {
@@ -235,6 +253,7 @@ int run_solver_loop_unguarded(CouplingClient& client, Solver& solver, io::Snapsh
     client.send_state(state);
     state.diagnostics.terms.clear();  // the first state carries them
     state.diagnostics.impulse_sources.clear();
+    state.diagnostics.output_fields.clear();
     // Overlaps with the coupler's interaction and the other solver's work.
     if (rates_pending && !timed(rates_are_finite)) return 1;
 

@@ -42,6 +42,14 @@ void to_wire(const coupling::Diagnostics& in, Diagnostics& out) {
   for (const std::string& term : in.terms) out.add_terms(term);
   out.mutable_impulse_sources()->Clear();
   for (const std::string& source : in.impulse_sources) out.add_impulse_sources(source);
+  out.mutable_output_fields()->Clear();
+  for (const coupling::OutputField& field : in.output_fields) {
+    OutputField* f = out.add_output_fields();
+    f->set_name(field.name);
+    f->set_components(field.components);
+    f->set_number_type(field.number_type);
+    f->set_unit(field.unit);
+  }
   assign(out.mutable_external_impulse(), in.external_impulse);
   assign(out.mutable_balance_momentum(), in.balance_momentum);
   auto& observables = *out.mutable_observables();
@@ -70,6 +78,9 @@ void from_wire(const Diagnostics& in, coupling::Diagnostics& out) {
   assign(out.momentum, in.momentum());
   out.terms.assign(in.terms().begin(), in.terms().end());
   out.impulse_sources.assign(in.impulse_sources().begin(), in.impulse_sources().end());
+  out.output_fields.clear();
+  for (const OutputField& f : in.output_fields())
+    out.output_fields.push_back({f.name(), f.components(), f.number_type(), f.unit()});
   assign(out.external_impulse, in.external_impulse());
   assign(out.balance_momentum, in.balance_momentum());
   for (const auto& [name, value] : in.observables()) {

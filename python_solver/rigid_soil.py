@@ -5,11 +5,14 @@ The soil is a rigid porous skeleton: its particles sit on the lattice of the sce
 and never move. Each step it reports the particles inside the overlap zone the coupler asked for,
 with zero velocity, their density, mass, porosity and material, and no time-step limit of its own;
 the interaction accelerations the coupler returns are checked for size and otherwise ignored
-(the skeleton absorbs them). It writes no snapshot file (no HDF5 in Python's standard library):
-the coupler then leaves the soil out of run.xdmf. The walk-through of this file is
-docs/solver-protocol.md.
+(the skeleton absorbs them). With h5py it writes soil.h5 (the layout of docs/solver-protocol.md,
+"Snapshots") with a field of its own, overlap_steps (how many steps each particle spent in the
+overlap zone), and declares its fields with its first state, so run.xdmf lists them; without
+h5py, or with --no-snapshots, it writes none, and the coupler leaves the soil out of run.xdmf. The walk-through of this
+file is docs/solver-protocol.md.
 
-  rigid_soil.py [--endpoint E] [--connect-timeout S] [--protocol-version V] [--fail-at-step N]
+  rigid_soil.py [--endpoint E] [--connect-timeout S] [--protocol-version V] [--no-snapshots]
+                [--fail-at-step N]
 
 Started by the coupler (soil.solver = "build/python/rigid_soil.py", or --set soil.solver=...),
 it connects to --endpoint or $POROSPH_ENDPOINT and sends the run token of $POROSPH_RUN_TOKEN with
@@ -30,6 +33,12 @@ import time
 import tomllib
 
 import zmq
+
+try:
+    import h5py
+    import numpy
+except ImportError:  # no snapshot file: the run goes on without one
+    h5py = None
 
 try:
     import porosph_pb2 as wire
@@ -178,6 +187,46 @@ class RigidSkeleton:
         return [i for i, x in enumerate(self.position) if inside_box(x, zone_min, zone_max)]
 
 
+class SnapshotFile:
+    """soil.h5: /snapshots/NNNNNN groups with a `time` attribute and one dataset per field."""
+
+    # name, components (0: the dimension), HDF5 / XDMF type, unit
+    FIELDS = [("velocity", 0, "Float", "m/s"), ("density", 1, "Float", "kg/m^3"),
+              ("porosity", 1, "Float", ""), ("id", 1, "Int", ""), ("material", 1, "Int", ""),
+              ("fixed", 1, "UChar", ""), ("overlap_steps", 1, "Int", "")]
+
+    def __init__(self, path, skeleton):
+        self.file = h5py.File(path, "w")
+        self.skeleton = skeleton
+        self.overlap_steps = numpy.zeros(len(skeleton.position), dtype=numpy.int64)
+
+    def declare(self, diagnostics):
+        """The fields besides position, sent with the first state (porosph.proto, OutputField)."""
+        for name, components, number_type, unit in self.FIELDS:
+            diagnostics.output_fields.add(name=name, number_type=number_type, unit=unit,
+                                          components=components or self.skeleton.dimension)
+
+    def count(self, overlap):
+        self.overlap_steps[overlap] += 1
+
+    def write(self, index, sim_time):
+        k = self.skeleton
+        n, d = len(k.position), k.dimension
+        values = {"position": numpy.array(k.position, dtype=float).reshape(n, d),
+                  "velocity": numpy.zeros((n, d)), "density": numpy.array(k.density),
+                  "porosity": numpy.array(k.porosity), "id": numpy.arange(n, dtype=numpy.int64),
+                  "material": numpy.array(k.material, dtype=numpy.int64),
+                  "fixed": numpy.ones(n, dtype=numpy.uint8), "overlap_steps": self.overlap_steps}
+        group = self.file.create_group("/snapshots/%06d" % index)
+        group.attrs["time"] = sim_time
+        for name, data in values.items():
+            group.create_dataset(name, data=data)
+        self.file.flush()
+
+    def close(self):
+        self.file.close()
+
+
 def fill_state(state, skeleton, overlap, observables):
     """The overlap particles (zero velocity), the region, no dt limit and the diagnostics."""
     d = skeleton.dimension
@@ -242,11 +291,25 @@ def run(options, connection):
         connection.report_error("cannot build the rigid skeleton: %s" % error, 0, 0.0)
         return 3
     observables = [o for o in scene.get("observables", []) if o["phase"] == PHASE]
+    snapshots = None
+    if h5py is not None and not options.no_snapshots:
+        snapshots = SnapshotFile(os.path.join(setup.output_dir, "soil.h5"), skeleton)
+    try:
+        return step_loop(options, connection, skeleton, observables, snapshots, timeout, started)
+    finally:
+        if snapshots is not None:
+            snapshots.close()
+
+
+def step_loop(options, connection, skeleton, observables, snapshots, timeout, started):
+    """The states and commands until the coupler stops the run, then Goodbye."""
 
     step, sim_time = 0, 0.0
     zone = ([], [])
     overlap = []
     state = wire.StepState()
+    if snapshots is not None:
+        snapshots.declare(state.diagnostics)  # with the first state only
     physics_seconds = 0.0
     while True:
         work_start = time.monotonic()
@@ -258,6 +321,7 @@ def run(options, connection):
         state.diagnostics.physics_seconds = time.monotonic() - work_start
         physics_seconds += state.diagnostics.physics_seconds
         connection.send("state", state)
+        state.diagnostics.ClearField("output_fields")
 
         envelope = connection.receive(timeout)
         if envelope.WhichOneof("body") != "command":
@@ -267,14 +331,18 @@ def run(options, connection):
         if problem:
             connection.report_error(problem, step, sim_time)
             return 3
+        if command.write_output and snapshots is not None:
+            snapshots.write(command.output_index, sim_time)  # the state before advancing
         if command.stop:
             break
-        # write_output: nothing to write. write_checkpoint: not supported, so checkpoint_written
-        # stays 0 and the coupler turns checkpoints off for the run.
+        # write_checkpoint: not supported, so checkpoint_written stays 0 and the coupler turns
+        # checkpoints off for the run.
         new_zone = (list(command.other_region_min), list(command.other_region_max))
         if new_zone != zone:
             zone = new_zone
             overlap = skeleton.inside(*zone)
+        if snapshots is not None:
+            snapshots.count(overlap)
         sim_time += command.dt  # exactly the coupler's dt: it checks the time of every state
         step += 1
 
@@ -293,6 +361,8 @@ def parse_options(argv):
                         help="seconds to wait for Setup after Hello")
     parser.add_argument("--protocol-version", type=int, default=PROTOCOL_VERSION,
                         help="version announced in Hello (tests of the coupler's check)")
+    parser.add_argument("--no-snapshots", action="store_true",
+                        help="write no soil.h5 (the coupler then leaves the soil out of run.xdmf)")
     parser.add_argument("--fail-at-step", type=int, default=-1,
                         help="report an Error instead of the state of this step (tests)")
     options = parser.parse_args(argv)

@@ -13,9 +13,11 @@ namespace porosph::rigid_soil {
 namespace {
 
 /// A double field of `rows` particles x `cols` values.
-io::FieldView f64_field(const char* name, std::size_t rows, std::size_t cols, const double* data) {
+io::FieldView f64_field(const char* name, std::size_t rows, std::size_t cols, const double* data,
+                        const char* unit = "") {
   io::FieldView f;
   f.name = name;
+  f.unit = unit;
   f.rows = rows;
   f.cols = cols;
   f.f64 = data;
@@ -142,13 +144,13 @@ std::vector<io::FieldView> RigidSoilSolver<D>::snapshot_fields() const {
   const std::size_t n = S.size();
   const double* zero = zeros_.data();
   std::vector<io::FieldView> fields;
-  fields.push_back(f64_field("position", n, D, n ? S.position[0].data() : nullptr));
-  fields.push_back(f64_field("velocity", n, D, zero));
-  fields.push_back(f64_field("density", n, 1, S.density.data()));
-  fields.push_back(f64_field("stress", n, 9, zero));
+  fields.push_back(f64_field("position", n, D, n ? S.position[0].data() : nullptr, "m"));
+  fields.push_back(f64_field("velocity", n, D, zero, "m/s"));
+  fields.push_back(f64_field("density", n, 1, S.density.data(), "kg/m^3"));
+  fields.push_back(f64_field("stress", n, 9, zero, "Pa"));
   fields.push_back(f64_field("porosity", n, 1, S.porosity.data()));
   fields.push_back(f64_field("plastic_strain", n, 1, zero));
-  fields.push_back(f64_field("displacement", n, D, zero));
+  fields.push_back(f64_field("displacement", n, D, zero, "m"));
   fields.push_back(io::field_view("id", S.id));
   fields.push_back(io::field_view("material", S.material));
   fields.push_back(io::field_view("fixed", S.fixed));
@@ -156,7 +158,8 @@ std::vector<io::FieldView> RigidSoilSolver<D>::snapshot_fields() const {
   // it from each snapshot (io/snapshot_writer.h). Only the two fields below change.
   for (io::FieldView& f : fields) f.unchanging = true;
   fields.push_back(f64_field("saturation", n, 1, S.saturation.data()));
-  fields.push_back(f64_field("absorbed_impulse", n, D, n ? S.absorbed_impulse[0].data() : nullptr));
+  fields.push_back(
+      f64_field("absorbed_impulse", n, D, n ? S.absorbed_impulse[0].data() : nullptr, "N s"));
   return fields;
 }
 

@@ -111,9 +111,10 @@ std::optional<std::string> find_non_finite_soil(const SoilParticles<D>& P, std::
 template <int D>
 std::vector<io::FieldView> soil_snapshot_fields(const SoilParticles<D>& P) {
   const std::size_t n = P.size();
-  auto f64 = [n](const char* name, std::size_t cols, const double* data) {
+  auto f64 = [n](const char* name, std::size_t cols, const double* data, const char* unit = "") {
     io::FieldView f;
     f.name = name;
+    f.unit = unit;
     f.rows = n;
     f.cols = cols;
     f.f64 = data;
@@ -129,14 +130,14 @@ std::vector<io::FieldView> soil_snapshot_fields(const SoilParticles<D>& P) {
     return f;
   };
   std::vector<io::FieldView> fields;
-  fields.push_back(f64("position", D, n ? P.position[0].data() : nullptr));
-  fields.push_back(f64("velocity", D, n ? P.velocity[0].data() : nullptr));
-  fields.push_back(f64("density", 1, P.density.data()));
+  fields.push_back(f64("position", D, n ? P.position[0].data() : nullptr, "m"));
+  fields.push_back(f64("velocity", D, n ? P.velocity[0].data() : nullptr, "m/s"));
+  fields.push_back(f64("density", 1, P.density.data(), "kg/m^3"));
   // A symmetric 3x3 matrix: its column-major storage equals the row-major layout.
-  fields.push_back(f64("stress", 9, n ? P.stress[0].data() : nullptr));
+  fields.push_back(f64("stress", 9, n ? P.stress[0].data() : nullptr, "Pa"));
   fields.push_back(f64("porosity", 1, P.porosity.data()));
   fields.push_back(f64("plastic_strain", 1, P.plastic_strain.data()));
-  fields.push_back(f64("displacement", D, n ? P.displacement[0].data() : nullptr));
+  fields.push_back(f64("displacement", D, n ? P.displacement[0].data() : nullptr, "m"));
   fields.push_back(f64("saturation", 1, P.saturation.data()));
   fields.push_back(i64("id", P.id.data()));
   fields.push_back(i64("material", P.material.data()));

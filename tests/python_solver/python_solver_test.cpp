@@ -1,7 +1,7 @@
 // The Python soil solver (python_solver/rigid_soil.py, run by /usr/bin/python3 through its
 // shebang) as the soil phase of real runs with the built-in fluid_solver: the Darcy column against
-// Darcy's law, the run directory of a solver that writes no snapshot file, and protocol errors of
-// the Python side stopping the run with their reason.
+// Darcy's law, its own snapshot field reaching run.xdmf, the run directory of a solver that writes
+// no snapshot file, and protocol errors of the Python side stopping the run with their reason.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -40,6 +40,27 @@ TEST(PythonSolverRun, DarcyColumnFollowsDarcysLaw) {
   EXPECT_LT(ledger.at("impulse_to_soil").at(1).get<double>(), 0.0);
   EXPECT_LT(ledger.at("relative_imbalance").get<double>(), 1e-10) << ledger.dump();
 
+  // Its snapshot file, with the fields it declared: its own overlap_steps (1 component, Int)
+  // reaches run.json and run.xdmf, and every dataset run.xdmf names is there with its shape.
+  ASSERT_TRUE(std::filesystem::exists(run.out + "/soil.h5"));
+  bool declared = false;
+  for (const auto& field : soil.at("output_fields"))
+    declared = declared || (field.at("name") == "overlap_steps" && field.at("components") == 1 &&
+                            field.at("type") == "Int");
+  EXPECT_TRUE(declared) << soil.at("output_fields").dump();
+  const std::string xdmf = read_text(run.out + "/run.xdmf");
+  EXPECT_NE(xdmf.find("soil.h5:/snapshots/000000/overlap_steps"), std::string::npos);
+  EXPECT_EQ(xdmf.find("/stress"), std::string::npos);  // a field it did not declare
+  const auto problems = test::check_xdmf_references(run.out + "/run.xdmf");
+  EXPECT_TRUE(problems.empty()) << problems.front();
+}
+
+TEST(PythonSolverRun, ASolverThatWritesNoSnapshotFileIsLeftOutOfTheIndex) {
+  const auto run =
+      run_case("darcy_column",
+               {"soil.solver=" + python_solver() + " --no-snapshots", "run.end_time=0.05"}, 60);
+  ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
+  const auto& soil = run.record.at("phases").at("soil");
   // No snapshot file: run.json still counts the outputs asked for, run.xdmf shows the water only.
   EXPECT_FALSE(std::filesystem::exists(run.out + "/soil.h5"));
   EXPECT_GT(soil.at("snapshots").get<int>(), 0);
