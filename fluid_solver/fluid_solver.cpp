@@ -21,7 +21,6 @@ namespace {
 
 /// Water particles are re-sorted by cell this often (steps), for memory locality of the pair loops
 /// (each re-sort forces a neighbour search: 100 measured faster than 20 on the dam break).
-constexpr std::uint64_t kReorderEvery = 100;
 
 class StopWatch {
  public:
@@ -42,10 +41,7 @@ FluidSolver<D>::FluidSolver(const scene::Scene& s)
     : params_(FluidParams<D>::from_scene(s)),
       terms_(scene::active_terms(s, "water")),
       box_(sph::DomainBox<D>::from_scene(s, 2.0 * params_.h)),
-      cubic_(sph::make_kernel<sph::CubicSpline<D>>(params_.h, s.run.dp,
-                                                   s.run.kernel_gradient != "plain")),
-      wendland_(sph::make_kernel<sph::WendlandC2<D>>(params_.h, s.run.dp,
-                                                     s.run.kernel_gradient != "plain")),
+      kernel_(s.run.kernel, params_.h, s.run.dp, s.run.kernel_gradient != "plain"),
       damping_(DampingStage::from_scene(s)),
       zones_(*s.water, params_.dp, damping_.duration()),
       reservoirs_(*s.water, params_.gravity, params_.dp, params_.h, params_.eos),
@@ -53,13 +49,6 @@ FluidSolver<D>::FluidSolver(const scene::Scene& s)
             static_cast<int>(zones_.inflow_count())),
       moving_walls_(s),
       pore_fields_(s.has_soil()) {
-  if (s.run.kernel == "cubic_spline") {
-    kernel_kind_ = KernelKind::CubicSpline;
-  } else if (s.run.kernel == "wendland_c2") {
-    kernel_kind_ = KernelKind::WendlandC2;
-  } else {
-    throw std::invalid_argument("run.kernel: unknown kernel '" + s.run.kernel + "'");
-  }
   for (const auto& o : s.observables)
     if (o.phase == "water") observables_.push_back(sph::prepare_observable<D>(o));
 
@@ -69,41 +58,15 @@ FluidSolver<D>::FluidSolver(const scene::Scene& s)
   next_id_ = static_cast<std::int64_t>(particles_.size());
   if (reservoirs_.count() > 0)  // room for a few refills before the arrays must grow
     particles_.reserve(particles_.position.capacity() + 4 * reservoirs_.column_count());
-  neighbours_.set_skin(sph::kSolverSkinFraction * 2.0 * params_.h);
-  reorder_by_cell();
-}
-
-template <int D>
-void FluidSolver<D>::build_neighbours() {
-  neighbours_.build(particles_.position.data(), particles_.size(), particles_.n_free,
-                    2.0 * params_.h, box_);
-}
-
-template <int D>
-void FluidSolver<D>::reorder_by_cell() {
-  neighbours_.invalidate();  // a search now: the current cell order, whatever the last search
-  build_neighbours();
-  neighbours_.cell_sorted_permutation(/*sort_fixed=*/step_ == 0, order_scratch_);
-  particles_.permute(order_scratch_);
-  sph::remap_overlap_index(overlap_index_, order_scratch_, inverse_scratch_);
-  neighbours_.invalidate();
-  build_neighbours();
+  cell_order_.reorder(neighbours_, particles_, box_, /*sort_fixed=*/true, overlap_index_);
 }
 
 template <int D>
 void FluidSolver<D>::compute_rates() {
   StopWatch watch(physics_seconds_);
-  if (step_ > 0 && step_ % kReorderEvery == 0) {
-    reorder_by_cell();
-  } else {
-    build_neighbours();
-  }
+  cell_order_.refresh(neighbours_, particles_, box_, step_, overlap_index_);
   neighbours_per_particle_ = neighbours_.neighbours_per_free_particle();
-  if (kernel_kind_ == KernelKind::CubicSpline) {
-    compute_rates_with(cubic_);
-  } else {
-    compute_rates_with(wendland_);
-  }
+  kernel_.visit([this](const auto& kernel) { compute_rates_with(kernel); });
 }
 
 template <int D>
@@ -137,8 +100,8 @@ double FluidSolver<D>::evaluate(const sph::PreparedObservable<D>& o,
     return k < 0 ? std::numeric_limits<double>::quiet_NaN()
                  : moving_walls_.force(static_cast<std::size_t>(k)).dot(o.direction);
   }
-  if (kernel_kind_ == KernelKind::CubicSpline) return sph::evaluate_observable(o, view, cubic_);
-  return sph::evaluate_observable(o, view, wendland_);
+  return kernel_.visit(
+      [&o, &view](const auto& kernel) { return sph::evaluate_observable(o, view, kernel); });
 }
 
 template <int D>

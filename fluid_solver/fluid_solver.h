@@ -24,7 +24,9 @@
 #include "io/snapshot_writer.h"
 #include "proto/coupling_client.h"
 #include "scene/scene.h"
+#include "sph/cell_order.h"
 #include "sph/domain_box.h"
+#include "sph/kernel_choice.h"
 #include "sph/kernels.h"
 #include "sph/neighbour_list.h"
 #include "sph/observables.h"
@@ -116,11 +118,8 @@ class FluidSolver {
   const DampingStage& damping_stage() const { return damping_; }
 
  private:
-  enum class KernelKind { CubicSpline, WendlandC2 };
   template <class Kernel>
   void compute_rates_with(const Kernel& kernel);
-  void build_neighbours();
-  void reorder_by_cell();
   void integrate(double dt);
   /// Whether the next advance() takes an Euler step of the modified Verlet scheme (the first
   /// step, every euler_every, density-filter steps, the end of the damping stage).
@@ -137,9 +136,7 @@ class FluidSolver {
   FluidParams<D> params_;
   std::vector<std::string> terms_;
   sph::DomainBox<D> box_;
-  KernelKind kernel_kind_ = KernelKind::CubicSpline;
-  sph::CubicSpline<D> cubic_;
-  sph::WendlandC2<D> wendland_;
+  sph::KernelChoice<D> kernel_;  ///< run.kernel: the one dispatch to the compiled loops
   DampingStage damping_;
   FlowZones<D> zones_;
   Reservoirs<D> reservoirs_;
@@ -149,6 +146,7 @@ class FluidSolver {
 
   FluidParticles<D> particles_;
   sph::NeighbourList<D> neighbours_;
+  sph::CellOrder<D> cell_order_{neighbours_, params_.h};  ///< search, re-sort by cell
   sph::DtLimits limits_;
   double time_ = 0.0;
   std::uint64_t step_ = 0;
@@ -167,8 +165,6 @@ class FluidSolver {
   WaterImpulseBook<D> book_;  ///< of the last advance() (checkpointed)
 
   std::vector<std::int32_t> overlap_index_;
-  std::vector<std::int32_t> inverse_scratch_;  ///< remap_overlap_index after a re-sort
-  std::vector<std::int32_t> order_scratch_;
   std::vector<std::uint8_t> keep_scratch_;
   std::vector<double> filter_scratch_;
   ParticleShiftingGradients<D> shifting_;  ///< of the latest rates (water.particle_shifting > 0)

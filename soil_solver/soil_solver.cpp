@@ -21,7 +21,6 @@ namespace porosph::soil {
 namespace {
 
 /// Free soil particles are re-sorted by cell this often (steps), for memory locality.
-constexpr std::uint64_t kReorderEvery = 100;
 
 }  // namespace
 
@@ -30,19 +29,9 @@ SoilSolver<D>::SoilSolver(const scene::Scene& s)
     : params_(SoilParams<D>::from_scene(s)),
       terms_(scene::active_terms(s, "soil")),
       box_(sph::DomainBox<D>::from_scene(s, 2.0 * params_.h)),
-      cubic_(sph::make_kernel<sph::CubicSpline<D>>(params_.h, s.run.dp,
-                                                   s.run.kernel_gradient != "plain")),
-      wendland_(sph::make_kernel<sph::WendlandC2<D>>(params_.h, s.run.dp,
-                                                     s.run.kernel_gradient != "plain")),
+      kernel_(s.run.kernel, params_.h, s.run.dp, s.run.kernel_gradient != "plain"),
       loads_(*s.soil) {
   using Vec = sph::Vec<D>;
-  if (s.run.kernel == "cubic_spline") {
-    kernel_kind_ = KernelKind::CubicSpline;
-  } else if (s.run.kernel == "wendland_c2") {
-    kernel_kind_ = KernelKind::WendlandC2;
-  } else {
-    throw std::invalid_argument("run.kernel: unknown kernel '" + s.run.kernel + "'");
-  }
   for (const auto& o : s.observables)
     if (o.phase == "soil") observables_.push_back(sph::prepare_observable<D>(o));
 
@@ -122,41 +111,14 @@ SoilSolver<D>::SoilSolver(const scene::Scene& s)
   if (s.water) mark_initially_submerged<D>(s.water->blocks, params_, P);
   if (params_.geostatic_initial) apply_geostatic_stress<D>(params_, P);
   loads_.tag(P, params_.dp, params_.materials);
-  neighbours_.set_skin(sph::kSolverSkinFraction * 2.0 * params_.h);
-  reorder_by_cell();
-}
-
-template <int D>
-void SoilSolver<D>::build_neighbours() {
-  neighbours_.build(particles_.position.data(), particles_.size(), particles_.n_free,
-                    2.0 * params_.h, box_);
-}
-
-template <int D>
-void SoilSolver<D>::reorder_by_cell() {
-  neighbours_.invalidate();  // a search now: the current cell order, whatever the last search
-  build_neighbours();
-  // Fixed particles keep their stored order (they never move).
-  neighbours_.cell_sorted_permutation(/*sort_fixed=*/false, order_scratch_);
-  particles_.permute(order_scratch_);
-  sph::remap_overlap_index(overlap_index_, order_scratch_, inverse_scratch_);
-  neighbours_.invalidate();
-  build_neighbours();
+  cell_order_.reorder(neighbours_, particles_, box_, /*sort_fixed=*/false, overlap_index_);
 }
 
 template <int D>
 void SoilSolver<D>::compute_rates() {
-  if (step_ > 0 && step_ % kReorderEvery == 0) {
-    reorder_by_cell();
-  } else {
-    build_neighbours();
-  }
+  cell_order_.refresh(neighbours_, particles_, box_, step_, overlap_index_);
   neighbours_per_particle_ = neighbours_.neighbours_per_free_particle();
-  if (kernel_kind_ == KernelKind::CubicSpline) {
-    compute_rates_with(cubic_);
-  } else {
-    compute_rates_with(wendland_);
-  }
+  kernel_.visit([this](const auto& kernel) { compute_rates_with(kernel); });
 }
 
 template <int D>
@@ -183,8 +145,8 @@ double SoilSolver<D>::evaluate(const sph::PreparedObservable<D>& o,
                                const sph::ParticleView<D>& view) const {
   if (o.kind == sph::PreparedObservable<D>::Kind::LoadVelocity)
     return loads_.velocity(o.load, particles_);
-  if (kernel_kind_ == KernelKind::CubicSpline) return sph::evaluate_observable(o, view, cubic_);
-  return sph::evaluate_observable(o, view, wendland_);
+  return kernel_.visit(
+      [&o, &view](const auto& kernel) { return sph::evaluate_observable(o, view, kernel); });
 }
 
 template <int D>
@@ -293,11 +255,8 @@ void SoilSolver<D>::advance(double dt) {
   loads_.make_rigid(P);  // rigid plates move as one along their axis (surface_loads.h)
   // Strain rate, spin and drho/dt from the new velocities at the old positions (the neighbour
   // list of this step is still exact), then the stress update.
-  if (kernel_kind_ == KernelKind::CubicSpline) {
-    compute_soil_kinematics(neighbours_, cubic_, P);
-  } else {
-    compute_soil_kinematics(neighbours_, wendland_, P);
-  }
+  kernel_.visit(
+      [this, &P](const auto& kernel) { compute_soil_kinematics(neighbours_, kernel, P); });
   update_stresses(dt);
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {  // drift

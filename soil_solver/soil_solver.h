@@ -28,7 +28,9 @@
 #include "soil_solver/soil_params.h"
 #include "soil_solver/soil_particles.h"
 #include "soil_solver/surface_loads.h"
+#include "sph/cell_order.h"
 #include "sph/domain_box.h"
+#include "sph/kernel_choice.h"
 #include "sph/kernels.h"
 #include "sph/neighbour_list.h"
 #include "sph/observables.h"
@@ -103,11 +105,8 @@ class SoilSolver {
   const SoilParams<D>& params() const { return params_; }
 
  private:
-  enum class KernelKind { CubicSpline, WendlandC2 };
   template <class Kernel>
   void compute_rates_with(const Kernel& kernel);
-  void build_neighbours();
-  void reorder_by_cell();
   void update_stresses(double dt);
   void remove_particles_outside();
   void remove_expired_walls();
@@ -116,14 +115,13 @@ class SoilSolver {
   SoilParams<D> params_;
   std::vector<std::string> terms_;
   sph::DomainBox<D> box_;
-  KernelKind kernel_kind_ = KernelKind::CubicSpline;
-  sph::CubicSpline<D> cubic_;
-  sph::WendlandC2<D> wendland_;
-  SurfaceLoads<D> loads_;  ///< [[soil.loads]]: tractions on tagged particles
+  sph::KernelChoice<D> kernel_;  ///< run.kernel: the one dispatch to the compiled loops
+  SurfaceLoads<D> loads_;        ///< [[soil.loads]]: tractions on tagged particles
   std::vector<sph::PreparedObservable<D>> observables_;
 
   SoilParticles<D> particles_;
   sph::NeighbourList<D> neighbours_;
+  sph::CellOrder<D> cell_order_{neighbours_, params_.h};  ///< search, re-sort by cell
   sph::DtLimits limits_;
   double time_ = 0.0;
   std::uint64_t step_ = 0;
@@ -142,8 +140,6 @@ class SoilSolver {
   std::vector<std::pair<std::int32_t, sph::Vec<D>>> fixed_interaction_;
 
   std::vector<std::int32_t> overlap_index_;
-  std::vector<std::int32_t> inverse_scratch_;  ///< remap_overlap_index after a re-sort
-  std::vector<std::int32_t> order_scratch_;
   std::vector<std::uint8_t> keep_scratch_;
   std::vector<Eigen::Matrix3d> filter_scratch_;
 };

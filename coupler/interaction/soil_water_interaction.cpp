@@ -7,7 +7,7 @@
 
 #include "coupler/interaction/soil_water_sums.h"
 #include "scene/term_registry.h"
-#include "sph/kernels.h"
+#include "sph/kernel_choice.h"
 
 namespace porosph::coupler {
 
@@ -48,13 +48,12 @@ std::unique_ptr<InteractionEngine> make_engine(const scene::Scene& s, int thread
   InteractionParameters p = parameters_from_scene(s);
   p.threads = threads;
   const sph::DomainBox<D> box = sph::DomainBox<D>::from_scene(s, 2.0 * s.h());
-  if (s.run.kernel == "cubic_spline") {
-    return std::make_unique<SoilWaterSums<D, sph::CubicSpline<D>>>(std::move(p), box);
-  }
-  if (s.run.kernel == "wendland_c2") {
-    return std::make_unique<SoilWaterSums<D, sph::WendlandC2<D>>>(std::move(p), box);
-  }
-  throw std::invalid_argument("soil-water interaction: unknown run.kernel '" + s.run.kernel + "'");
+  const sph::KernelChoice<D> choice(s.run.kernel, s.h(), s.run.dp,
+                                    s.run.kernel_gradient != "plain");
+  return choice.visit([&](const auto& kernel) -> std::unique_ptr<InteractionEngine> {
+    using Kernel = std::decay_t<decltype(kernel)>;
+    return std::make_unique<SoilWaterSums<D, Kernel>>(std::move(p), box);
+  });
 }
 
 }  // namespace
