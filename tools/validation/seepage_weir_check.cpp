@@ -21,6 +21,7 @@ using Box = SeepageBox;
 /// (the shape factor q / (K (h1 - h2))), the exit gradient and phi at the probes, each
 /// Richardson-extrapolated from a grid series (cells of 20, 10, 5, 2.5 mm).
 GridSeries unit_reference(const Box& layer, double weir_x0, double weir_x1, double stretch,
+                          const std::vector<SolidBlock>& cutoffs,
                           const std::vector<std::pair<double, double>>& probes) {
   std::vector<std::string> names = {"discharge", "exit_gradient"};
   for (std::size_t k = 0; k < probes.size(); ++k) names.push_back("phi" + std::to_string(k));
@@ -36,6 +37,7 @@ GridSeries unit_reference(const Box& layer, double weir_x0, double weir_x1, doub
     problem.conductivity = 1.0;
     problem.fixed_heads.push_back({Side::kTop, layer.x0, weir_x0, 1.0});
     problem.fixed_heads.push_back({Side::kTop, weir_x1, layer.x1, 0.0});
+    problem.solids = cutoffs;
     const LaplaceSolution solution = solve_laplace(problem);
     std::vector<double> values = {
         solution.discharge_across_vertical(0.5 * (weir_x0 + weir_x1), layer.y0, layer.y1),
@@ -48,8 +50,10 @@ GridSeries unit_reference(const Box& layer, double weir_x0, double weir_x1, doub
 /// The FV discharge under the weir's centre (K = 1) with fixed heads on the top cells given per
 /// cell (NaN: no flow, under the weir or without water above it); cells of `cell` m.
 double discharge_with_top_heads(const Box& layer, double weir_mid, double cell,
+                                const std::vector<SolidBlock>& cutoffs,
                                 const std::vector<double>& top_heads) {
   LaplaceProblem problem;
+  problem.solids = cutoffs;
   problem.x0 = layer.x0, problem.x1 = layer.x1, problem.y0 = layer.y0, problem.y1 = layer.y1;
   problem.cells_x = static_cast<int>(top_heads.size());
   problem.cells_y = static_cast<int>(std::lround((layer.y1 - layer.y0) / cell));
@@ -88,6 +92,16 @@ SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
     if (wall.value("label", "") == "weir") weir_entry = &wall;
   if (weir_entry == nullptr) throw std::runtime_error("seepage_weir: no wall labelled 'weir'");
   const Box weir = seepage_box(*weir_entry, "seepage_weir", "the weir");
+  // Walls inside the layer (a cut-off wall under the weir) are impermeable solids of the
+  // reference; their edges must lie on the 20 mm grid of its coarsest level.
+  std::vector<SolidBlock> cutoffs;
+  for (const auto& wall : parameters.at("walls")) {
+    if (wall.at("shape").get<std::string>() != "box") continue;
+    const Box b = seepage_box(wall, "seepage_weir", "a wall");
+    if (b.x0 < layer.x1 && b.x1 > layer.x0 && b.y0 < layer.y1 && b.y1 > layer.y0)
+      cutoffs.push_back({std::max(b.x0, layer.x0), std::min(b.x1, layer.x1),
+                         std::max(b.y0, layer.y0), std::min(b.y1, layer.y1)});
+  }
 
   SeepageWeirCheck out;
   out.dp = scene.dp;
@@ -173,10 +187,10 @@ SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
       top_heads[k] = top_sum[k] / top_count[k];
   }
   out.discharge_own_heads =
-      out.conductivity * discharge_with_top_heads(layer, mid, cell, top_heads);
+      out.conductivity * discharge_with_top_heads(layer, mid, cell, cutoffs, top_heads);
 
   const GridSeries reference =
-      unit_reference(layer, weir.x0, weir.x1, out.exit_stretch, probe_points);
+      unit_reference(layer, weir.x0, weir.x1, out.exit_stretch, cutoffs, probe_points);
   const double dh = out.head_upstream - out.head_downstream;
   if (near_count > 0)
     out.upstream_head_near_weir = (near_sum / near_count - out.head_upstream) / dh;
