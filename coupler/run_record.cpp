@@ -14,6 +14,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "coupler/phase_slots.h"
 #include "coupler/run_directory.h"
 
 namespace porosph::coupler {
@@ -385,8 +386,6 @@ std::vector<io::XdmfField> snapshot_fields_of_phase(const std::string& phase, in
   return fields;
 }
 
-std::string h5_file_of_phase(const std::string& phase) {
-  return phase == "water" ? "fluid.h5" : phase + ".h5";
-}
+std::string h5_file_of_phase(const std::string& phase) { return phase_slot(phase).snapshot_file; }
 
 }  // namespace porosph::coupler

@@ -182,8 +182,7 @@ void RunSession::start_solvers() {
   for (const std::string& phase : scene_.phases()) {
     SolverCommand command;
     try {
-      command = resolve_solver_command(
-          phase, phase == "water" ? options_.fluid_solver : options_.soil_solver, scene_);
+      command = resolve_solver_command(phase, options_.solver_override(phase), scene_);
     } catch (const std::invalid_argument& e) {
       throw BadInput(e.what());
     }

@@ -12,8 +12,12 @@ struct RunOptions {
   std::vector<std::string> overrides;  ///< "--set a.b=value"
   std::string fluid_solver;            ///< executable override for the water phase
   std::string soil_solver;             ///< executable override for the soil phase
-  bool attach = false;                 ///< solvers are started by hand and connect to `endpoint`
-  std::string endpoint;                ///< default: a fresh ipc:// path
+  /// The override of `phase` (--fluid-solver, --soil-solver); empty: none.
+  const std::string& solver_override(const std::string& phase) const {
+    return phase == "water" ? fluid_solver : soil_solver;
+  }
+  bool attach = false;   ///< solvers are started by hand and connect to `endpoint`
+  std::string endpoint;  ///< default: a fresh ipc:// path
   bool progress = true;
   /// `coupler run --resume DIR`: continue the run in DIR from its latest checkpoint (scene_path,
   /// out_dir and overrides unused: the scene is the one the checkpoint keeps).

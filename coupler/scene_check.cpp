@@ -1,6 +1,7 @@
 #include "coupler/scene_check.h"
 
 #include "coupler/block_lattice.h"
+#include "coupler/phase_slots.h"
 #include "coupler/run_size.h"
 #include "scene/scene_loader.h"
 #include "scene/term_registry.h"
@@ -54,9 +55,8 @@ int check_scene(const CheckOptions& options, std::ostream& out, std::ostream& er
   for (const std::string phase : {"water", "soil", "interaction"}) {
     const std::vector<std::string> terms = scene::active_terms(scene, phase);
     if (terms.empty()) continue;
-    const std::string own_solver = phase == "water"  ? scene.water->solver
-                                   : phase == "soil" ? scene.soil->solver
-                                                     : std::string();
+    const std::string own_solver =
+        phase == "interaction" ? std::string() : scene_solver_command(scene, phase);
     if (!own_solver.empty()) {  // a replacement solver declares its terms when it starts
       out << "# " << phase << " terms: declared by " << own_solver << " at its start\n";
       continue;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "coupler/phase_slots.h"
 #include "proto/coupling_client.h"
 
 namespace porosph::coupler {
@@ -15,10 +16,9 @@ SolverCommand resolve_solver_command(const std::string& phase, const std::string
                                      const scene::Scene& scene) {
   SolverCommand c;
   c.requested = command_line;
-  if (c.requested.empty())
-    c.requested = phase == "water" ? scene.water->solver : scene.soil->solver;
+  if (c.requested.empty()) c.requested = scene_solver_command(scene, phase);
   c.user_named = !c.requested.empty();
-  if (!c.user_named) c.requested = phase == "water" ? "fluid_solver" : "soil_solver";
+  if (!c.user_named) c.requested = phase_slot(phase).builtin_solver;
   std::istringstream words(c.requested);
   for (std::string word; words >> word;) c.args.push_back(word);
   if (c.args.empty()) throw std::invalid_argument("the " + phase + " solver command is empty");

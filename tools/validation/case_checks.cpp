@@ -16,6 +16,17 @@ std::vector<double> gravity_of(const nlohmann::json& run) {
   return run.at("parameters").at("run").at("gravity").get<std::vector<double>>();
 }
 
+/// Least-squares slope of y over x for the points with x >= from (NaN with fewer than two).
+double slope_from(const std::vector<double>& x, const std::vector<double>& y, double from) {
+  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (x[i] < from) continue;
+    n += 1, sx += x[i], sy += y[i], sxx += x[i] * x[i], sxy += x[i] * y[i];
+  }
+  const double d = n * sxx - sx * sx;
+  return n >= 2 && d > 0 ? (n * sxy - sx * sy) / d : std::nan("");
+}
+
 double norm(const std::vector<double>& v) {
   double s = 0;
   for (double x : v) s += x * x;
@@ -55,6 +66,8 @@ DamBreakComparison compare_dam_break(const std::string& run_dir, const std::stri
   }
   if (out.T.empty()) throw std::runtime_error(run_dir + ": the run covers no reference time");
   out.mean_abs_error = sum / static_cast<double>(out.T.size());
+  out.late_speed = slope_from(out.T, out.Z_simulated, DamBreakComparison::kLateSpeedFrom);
+  out.late_speed_reference = slope_from(out.T, out.Z_reference, DamBreakComparison::kLateSpeedFrom);
   out.mean_abs_error_shifted = out.mean_abs_error;
   for (int k = 1; k <= 60; ++k) {
     const double shift = 0.01 * k;

@@ -348,6 +348,11 @@ int main(int argc, char** argv) {
                   c.max_abs_error);
       std::printf("diagnostic: a release delay of dT = %.2f would leave mean |dZ| = %.3f\n",
                   c.best_shift, c.mean_abs_error_shifted);
+      std::printf(
+          "time-origin free: the late front speed dZ/dT over T >= %.1f is %.3f, the "
+          "table's %.3f (%+.1f %%)\n",
+          c.kLateSpeedFrom, c.late_speed, c.late_speed_reference,
+          100.0 * (c.late_speed / c.late_speed_reference - 1.0));
       print_summary("mean |dZ| of the surge front", fmt("%.3f", c.mean_abs_error),
                     "Martin & Moyce (1952)", fmt("%.3f", c.mean_abs_error), "<= 0.10",
                     c.mean_abs_error <= 0.10);
