@@ -5,12 +5,9 @@
 // coefficients a [s/m], b [s^2/m^2] come from the soil material's seepage law
 // (porous/permeability.h), evaluated at the porosity n of the soil particle: its current
 // porosity (eq. 20) when the material has variable_permeability, else its initial porosity n0.
-//   "darcy_kozeny_carman"   a = 1/k, k from Kozeny-Carman (eq. 14, effective_diameter), b = 0
-//   "darcy_conductivity"    a = 1/k, b = 0, k = hydraulic_conductivity at n0; with variable
-//                           permeability k follows the Kozeny-Carman porosity function:
-//                           k(n) = k0 [n^3 / (1 - n)^2] / [n0^3 / (1 - n0)^2]
-//   "forchheimer_den_adel"  a, b of Den Adel (eq. 15, d15, den_adel_alpha, den_adel_beta)
-//   "none"                  no seepage force (the coupler skips the force of such pairs)
+// The laws, their keys and their coefficients are registered in porous/seepage_laws.h
+// (darcy_kozeny_carman, darcy_conductivity, forchheimer_den_adel); "none": no seepage force (the
+// coupler skips the force of such pairs).
 #pragma once
 
 #include <algorithm>
@@ -20,6 +17,7 @@
 
 #include "porous/permeability.h"
 #include "porous/porosity.h"
+#include "porous/seepage_laws.h"
 #include "scene/scene.h"
 #include "sph/vector.h"
 
@@ -46,8 +44,6 @@ double seepage_rate_coefficient(double weighted_a, double weighted_b,
 /// The seepage law of one soil material: a and b of eq. 13 as functions of a particle's porosity.
 class SeepageLaw {
  public:
-  enum class Kind { None, DarcyKozenyCarman, DarcyConductivity, ForchheimerDenAdel };
-
   /// `gravity` = |g| [m/s^2] and `kinematic_viscosity` = nu of the water [m^2/s], both > 0 for
   /// an active law. Throws std::invalid_argument naming the material on an unknown law or a
   /// parameter the law needs that is not positive.
@@ -56,45 +52,36 @@ class SeepageLaw {
     SeepageLaw law;
     law.initial_porosity_ = m.porosity;
     law.variable_ = m.variable_permeability;
-    law.gravity_ = gravity;
-    law.nu_ = kinematic_viscosity;
-    auto need = [&](double value, const char* what) {
+    law.parameters_ = m.seepage_parameters;
+    auto need = [&](double value, const std::string& what) {
       if (!(value > 0.0) || !std::isfinite(value)) {
         throw std::invalid_argument("soil material '" + m.name + "': seepage '" + m.seepage +
                                     "' needs " + what + " > 0");
       }
     };
     if (m.seepage == "none") return law;
+    const std::vector<SeepageLawSpec> laws = seepage_laws();
+    const SeepageLawSpec* spec = find_seepage_law(laws, m.seepage);
+    if (spec == nullptr) {
+      throw std::invalid_argument("soil material '" + m.name + "': unknown seepage law '" +
+                                  m.seepage + "'");
+    }
     if (!(m.porosity > 0.0 && m.porosity < 1.0)) {
       throw std::invalid_argument("soil material '" + m.name + "': seepage '" + m.seepage +
                                   "' needs 0 < porosity < 1");
     }
     need(gravity, "gravity |g|");
-    if (m.seepage == "darcy_kozeny_carman") {
-      law.kind_ = Kind::DarcyKozenyCarman;
-      need(kinematic_viscosity, "a water viscosity (water.viscosity)");
-      need(m.effective_diameter, "effective_diameter");
-      law.diameter_ = m.effective_diameter;
-    } else if (m.seepage == "darcy_conductivity") {
-      law.kind_ = Kind::DarcyConductivity;
-      need(m.hydraulic_conductivity, "hydraulic_conductivity");
-      law.conductivity_ = m.hydraulic_conductivity;
-    } else if (m.seepage == "forchheimer_den_adel") {
-      law.kind_ = Kind::ForchheimerDenAdel;
-      need(kinematic_viscosity, "a water viscosity (water.viscosity)");
-      need(m.d15, "d15");
-      law.diameter_ = m.d15;
-      law.alpha_ = m.den_adel_alpha;
-      law.beta_ = m.den_adel_beta;
-    } else {
-      throw std::invalid_argument("soil material '" + m.name + "': unknown seepage law '" +
-                                  m.seepage + "'");
+    if (spec->needs_viscosity) need(kinematic_viscosity, "a water viscosity (water.viscosity)");
+    for (const scene::KeySpec& key : spec->keys) {
+      const auto it = law.parameters_.find(key.name());
+      need(it == law.parameters_.end() ? 0.0 : it->second, key.name());
     }
+    law.coefficients_ = spec->coefficients;
+    law.inputs_ = {nullptr, m.porosity, gravity, kinematic_viscosity};
     return law;
   }
 
-  Kind kind() const { return kind_; }
-  bool active() const { return kind_ != Kind::None; }
+  bool active() const { return static_cast<bool>(coefficients_); }
 
   /// The porosity the coefficients use for a particle whose current porosity is
   /// `particle_porosity`: that porosity with variable permeability (clamped to the admissible
@@ -108,32 +95,18 @@ class SeepageLaw {
 
   /// a and b of eq. 13 for a particle of current porosity `particle_porosity` ({0, 0} if none).
   SeepageCoefficients coefficients(double particle_porosity) const {
-    const double n = porosity_used(particle_porosity);
-    switch (kind_) {
-      case Kind::None:
-        return {};
-      case Kind::DarcyKozenyCarman:
-        return darcy_kozeny_carman(n, diameter_, gravity_, nu_);
-      case Kind::DarcyConductivity:
-        return darcy_constant(conductivity_ * kozeny_carman_shape(n) /
-                              kozeny_carman_shape(initial_porosity_));
-      case Kind::ForchheimerDenAdel:
-        return forchheimer_den_adel(n, diameter_, gravity_, nu_, alpha_, beta_);
-    }
-    return {};
+    if (!coefficients_) return {};
+    SeepageLawInputs in = inputs_;
+    in.parameters = &parameters_;  // this object's copy (the law may have been moved)
+    return coefficients_(porosity_used(particle_porosity), in);
   }
 
-  /// n^3 / (1 - n)^2, the porosity dependence of the Kozeny-Carman conductivity (eq. 14).
-  static double kozeny_carman_shape(double n) { return n * n * n / ((1.0 - n) * (1.0 - n)); }
-
  private:
-  Kind kind_ = Kind::None;
   double initial_porosity_ = 0.4;
   bool variable_ = false;
-  double gravity_ = 0.0, nu_ = 0.0;
-  double diameter_ = 0.0;      ///< d_e (Kozeny-Carman) or d15 (Den Adel) [m]
-  double conductivity_ = 0.0;  ///< k at n0 [m/s]
-  double alpha_ = kDenAdelAlpha, beta_ = kDenAdelBeta;
+  std::map<std::string, double> parameters_;
+  SeepageLawInputs inputs_;
+  std::function<SeepageCoefficients(double, const SeepageLawInputs&)> coefficients_;
 };
 
 }  // namespace porosph::porous

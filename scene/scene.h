@@ -148,25 +148,27 @@ struct SoilMaterial {
   /// Both elastic pairs are filled by the loader from whichever the scene gave:
   /// K = E / (3 (1 - 2 nu)), G = E / (2 (1 + nu)); E = 9 K G / (3 K + G),
   /// nu = (3 K - 2 G) / (2 (3 K + G)).
-  double young_modulus = 0.0;           ///< E [Pa]
-  double poisson_ratio = 0.0;           ///< nu
-  double bulk_modulus = 0.0;            ///< K [Pa]
-  double shear_modulus = 0.0;           ///< G [Pa]
-  double cohesion = 0.0;                ///< c [Pa]
-  double friction_angle_deg = 0.0;      ///< phi [deg]
-  double dilatancy_angle_deg = 0.0;     ///< psi [deg], <= phi
-  std::string yield_fit = "eq10";       ///< "eq10" | "flow_rule" (drucker_prager_constants.h)
-  bool artificial_stress = false;       ///< Gray-Monaghan artificial stress on
-  bool fixed = false;                   ///< rigid porous bed: never moves
-  std::string seepage = "none";         ///< "none" | "darcy_kozeny_carman" | "darcy_conductivity" |
-                                        ///< "forchheimer_den_adel"
-  double effective_diameter = 0.0;      ///< d_e [m] (darcy_kozeny_carman; else 0)
-  double d15 = 0.0;                     ///< [m] (forchheimer_den_adel; else 0)
-  double den_adel_alpha = 150.0;        ///< eq. 15 alpha
-  double den_adel_beta = 0.4;           ///< eq. 15 beta
-  double hydraulic_conductivity = 0.0;  ///< [m/s] (darcy_conductivity; else 0)
-  bool variable_permeability = true;    ///< coefficients follow the current porosity (eq. 20)
-  bool wet_cohesion_loss = false;       ///< cohesion vanishes once the particle is wet
+  double young_modulus = 0.0;        ///< E [Pa]
+  double poisson_ratio = 0.0;        ///< nu
+  double bulk_modulus = 0.0;         ///< K [Pa]
+  double shear_modulus = 0.0;        ///< G [Pa]
+  double cohesion = 0.0;             ///< c [Pa]
+  double friction_angle_deg = 0.0;   ///< phi [deg]
+  double dilatancy_angle_deg = 0.0;  ///< psi [deg], <= phi
+  std::string yield_fit = "eq10";    ///< "eq10" | "flow_rule" (drucker_prager_constants.h)
+  bool artificial_stress = false;    ///< Gray-Monaghan artificial stress on
+  bool fixed = false;                ///< rigid porous bed: never moves
+  std::string seepage = "none";      ///< "none" or a law of porous/seepage_laws.h
+  /// The keys of that law (effective_diameter, hydraulic_conductivity, d15, den_adel_alpha, ...),
+  /// by name, with their defaults filled in; empty for "none".
+  std::map<std::string, double> seepage_parameters;
+  /// A law key's value, 0 when the material's law has no such key.
+  double seepage_parameter(const std::string& key) const {
+    const auto it = seepage_parameters.find(key);
+    return it == seepage_parameters.end() ? 0.0 : it->second;
+  }
+  bool variable_permeability = true;  ///< coefficients follow the current porosity (eq. 20)
+  bool wet_cohesion_loss = false;     ///< cohesion vanishes once the particle is wet
 };
 
 /// A surface load on the soil ([[soil.loads]]): the free soil particles inside [min, max] at t = 0

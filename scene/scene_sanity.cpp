@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <limits>
 
+#include "porous/seepage_laws.h"
 #include "scene/scene_internal.h"
 
 namespace porosph::scene {
@@ -150,15 +151,20 @@ class SanityChecker {
     // No gravity is allowed: the drag's unit weight gamma_w = rho0 |g| then takes the standard
     // gravity 9.80665 m/s^2 (coupler/interaction/soil_water_interaction.cpp), so that a
     // conductivity stays a material property (the momentum-exchange test runs without gravity).
-    const bool kozeny = m.seepage == "darcy_kozeny_carman";
-    if (kozeny || m.seepage == "forchheimer_den_adel") {
-      if (!(scene_.water->viscosity > 0.0))
-        fail("water.viscosity", law + " needs a water viscosity > 0 (its kinematic viscosity)");
-      const double d = kozeny ? m.effective_diameter : m.d15;
-      const std::string name = kozeny ? "effective_diameter" : "d15";
+    const std::vector<porous::SeepageLawSpec> laws = porous::seepage_laws();
+    const porous::SeepageLawSpec* spec = porous::find_seepage_law(laws, m.seepage);
+    if (spec == nullptr) return;  // the schema refuses unknown laws
+    if (spec->needs_viscosity && !(scene_.water->viscosity > 0.0))
+      fail("water.viscosity", law + " needs a water viscosity > 0 (its kinematic viscosity)");
+    for (const KeySpec& parameter : spec->keys) {  // the laws use their keys squared at most
+      const double d = m.seepage_parameter(parameter.name());
+      const std::string unit = parameter.unit.empty() ? std::string()
+                               : parameter.unit.find('/') == std::string::npos
+                                   ? " " + parameter.unit + "^2"
+                                   : " (" + parameter.unit + ")^2";
       if (!finite_positive(d * d))
-        fail(key + "." + name, "its square " + format_number(d * d) +
-                                   " m^2 is not a finite positive number (" + law + ")");
+        fail(key + "." + parameter.name(), "its square " + format_number(d * d) + unit +
+                                               " is not a finite positive number (" + law + ")");
     }
   }
 

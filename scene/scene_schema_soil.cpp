@@ -2,6 +2,9 @@
 // skeleton and seepage law per material) and [[soil.blocks]] (regions filled with soil).
 // Relations between keys (elastic pairs, dilatancy <= friction, block materials) are checked in
 // scene_soil.cpp.
+#include <algorithm>
+
+#include "porous/seepage_laws.h"
 #include "scene/scene_schema_builder.h"
 
 namespace porosph::scene::schema_detail {
@@ -102,41 +105,32 @@ void add_soil_materials(SceneSchema& s) {
 
 void add_seepage(SceneSchema& s) {
   const std::string m = "soil.materials[].";
-  s.keys.push_back(
-      Key(m + "seepage", T::String)
-          .fallback("\"none\"")
-          .one_of({"none", "darcy_kozeny_carman", "darcy_conductivity", "forchheimer_den_adel"})
-          .doc("Seepage law of the water-soil interaction (eq. 13): none; Darcy with k from "
-               "Kozeny-Carman (eq. 14); Darcy with a given hydraulic conductivity; Forchheimer "
-               "with Den Adel coefficients (eq. 15)."));
-  s.keys.push_back(Key(m + "effective_diameter", T::Float)
-                       .unit("m")
-                       .required()
-                       .above(0)
-                       .only_when("seepage", {"darcy_kozeny_carman"})
-                       .doc("Effective grain diameter d_e of Kozeny-Carman (eq. 14)."));
-  s.keys.push_back(Key(m + "hydraulic_conductivity", T::Float)
-                       .unit("m/s")
-                       .required()
-                       .above(0)
-                       .only_when("seepage", {"darcy_conductivity"})
-                       .doc("Darcy hydraulic conductivity at porosity n0."));
-  s.keys.push_back(Key(m + "d15", T::Float)
-                       .unit("m")
-                       .required()
-                       .above(0)
-                       .only_when("seepage", {"forchheimer_den_adel"})
-                       .doc("Grain diameter d15 (15 % finer by weight) of Den Adel (eq. 15)."));
-  s.keys.push_back(Key(m + "den_adel_alpha", T::Float)
-                       .fallback("150.0")
-                       .above(0)
-                       .only_when("seepage", {"forchheimer_den_adel"})
-                       .doc("Den Adel coefficient alpha of the linear term (eq. 15)."));
-  s.keys.push_back(Key(m + "den_adel_beta", T::Float)
-                       .fallback("0.4")
-                       .above(0)
-                       .only_when("seepage", {"forchheimer_den_adel"})
-                       .doc("Den Adel coefficient beta of the quadratic term (eq. 15)."));
+  // The laws and their keys are registered in porous/seepage_laws.h; each key is allowed (and
+  // required or defaulted) only with the laws that declare it.
+  const std::vector<porous::SeepageLawSpec> laws = porous::seepage_laws();
+  std::vector<std::string> names = {"none"};
+  std::string doc =
+      "Seepage law of the water-soil interaction (eq. 13; porous/seepage_laws.h). none: no "
+      "seepage force.";
+  for (const porous::SeepageLawSpec& law : laws) {
+    names.push_back(law.name);
+    doc += " " + law.name + ": " + law.summary;
+  }
+  s.keys.push_back(Key(m + "seepage", T::String).fallback("\"none\"").one_of(names).doc(doc));
+  std::vector<KeySpec> law_keys;
+  for (const porous::SeepageLawSpec& law : laws) {
+    for (KeySpec key : law.keys) {
+      auto same = std::find_if(law_keys.begin(), law_keys.end(),
+                               [&key](const KeySpec& k) { return k.path == key.path; });
+      if (same != law_keys.end()) {
+        same->applies_when->values.push_back(law.name);
+        continue;
+      }
+      key.applies_when = Condition{"seepage", {law.name}};
+      law_keys.push_back(key);
+    }
+  }
+  s.keys.insert(s.keys.end(), law_keys.begin(), law_keys.end());
 }
 
 void add_soil_blocks(SceneSchema& s) {

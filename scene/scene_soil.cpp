@@ -8,6 +8,7 @@
 #include <cmath>
 #include <map>
 
+#include "porous/seepage_laws.h"
 #include "scene/scene_internal.h"
 
 namespace porosph::scene {
@@ -98,11 +99,11 @@ SoilMaterial material_of(const toml::table& table) {
   m.artificial_stress = flag("artificial_stress", m.artificial_stress);
   m.fixed = flag("fixed", m.fixed);
   m.seepage = table["seepage"].value<std::string>().value_or(m.seepage);
-  m.effective_diameter = number("effective_diameter", m.effective_diameter);
-  m.d15 = number("d15", m.d15);
-  m.den_adel_alpha = number("den_adel_alpha", m.den_adel_alpha);
-  m.den_adel_beta = number("den_adel_beta", m.den_adel_beta);
-  m.hydraulic_conductivity = number("hydraulic_conductivity", m.hydraulic_conductivity);
+  const std::vector<porous::SeepageLawSpec> laws = porous::seepage_laws();
+  if (const porous::SeepageLawSpec* law = porous::find_seepage_law(laws, m.seepage)) {
+    for (const KeySpec& key : law->keys)
+      m.seepage_parameters[key.name()] = number(key.name().c_str(), 0.0);
+  }
   m.variable_permeability = flag("variable_permeability", m.variable_permeability);
   m.wet_cohesion_loss = flag("wet_cohesion_loss", m.wet_cohesion_loss);
   return m;

@@ -2,6 +2,7 @@
 // registration per term, with the keys it owns and its switch.
 #include <algorithm>
 
+#include "porous/seepage_laws.h"
 #include "scene/scene_schema_builder.h"
 #include "scene/term_registry.h"
 
@@ -200,17 +201,13 @@ void add_interaction_terms(std::vector<TermSpec>& t) {
                    "Pairwise seepage force between water and soil (eq. 13); "
                    "coupler/interaction/seepage_force.h.",
                    "a material with seepage != \"none\"", any_seepage));
-  t.push_back(term("interaction", "seepage_darcy_kozeny_carman",
-                   "Darcy drag with Kozeny-Carman permeability (eq. 14); porous/seepage_law.h.",
-                   "a material with seepage = \"darcy_kozeny_carman\"",
-                   law("darcy_kozeny_carman")));
-  t.push_back(term("interaction", "seepage_darcy_conductivity",
-                   "Darcy drag of a given hydraulic conductivity; porous/seepage_law.h.",
-                   "a material with seepage = \"darcy_conductivity\"", law("darcy_conductivity")));
-  t.push_back(term("interaction", "seepage_forchheimer_den_adel",
-                   "Forchheimer drag with Den Adel coefficients (eq. 15); porous/seepage_law.h.",
-                   "a material with seepage = \"forchheimer_den_adel\"",
-                   law("forchheimer_den_adel")));
+  std::vector<std::string> law_names;
+  for (const porous::SeepageLawSpec& spec : porous::seepage_laws()) {  // one term per law
+    law_names.push_back(spec.name);
+    t.push_back(term("interaction", "seepage_" + spec.name,
+                     spec.summary + " porous/seepage_laws.h.",
+                     "a material with seepage = \"" + spec.name + "\"", law(spec.name)));
+  }
   t.push_back(term(
       "interaction", "variable_permeability",
       "Seepage coefficients follow each particle's porosity (eq. 18-20); "
@@ -222,8 +219,7 @@ void add_interaction_terms(std::vector<TermSpec>& t) {
       },
       {Key(m + "variable_permeability", T::Bool)
            .fallback("true")
-           .only_when("seepage",
-                      {"darcy_kozeny_carman", "darcy_conductivity", "forchheimer_den_adel"})
+           .only_when("seepage", law_names)
            .doc("The seepage coefficients follow the current porosity of each particle (eq. 20); "
                 "false: they keep their value at n0.")}));
   t.push_back(term("interaction", "wet_marking",

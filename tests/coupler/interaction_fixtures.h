@@ -42,7 +42,7 @@ inline scene::SoilMaterial kozeny_carman_material(double n0 = 0.4, double d_e = 
   m.density = 1600.0;
   m.porosity = n0;
   m.seepage = "darcy_kozeny_carman";
-  m.effective_diameter = d_e;
+  m.seepage_parameters = {{"effective_diameter", d_e}};
   m.variable_permeability = false;
   return m;
 }
@@ -51,8 +51,7 @@ inline scene::SoilMaterial conductivity_material(double k = 1e-3) {
   scene::SoilMaterial m = kozeny_carman_material();
   m.name = "silt";
   m.seepage = "darcy_conductivity";
-  m.effective_diameter = 0.0;
-  m.hydraulic_conductivity = k;
+  m.seepage_parameters = {{"hydraulic_conductivity", k}};
   return m;
 }
 
@@ -60,8 +59,7 @@ inline scene::SoilMaterial den_adel_material(double d15 = 5e-3) {
   scene::SoilMaterial m = kozeny_carman_material();
   m.name = "gravel";
   m.seepage = "forchheimer_den_adel";
-  m.effective_diameter = 0.0;
-  m.d15 = d15;
+  m.seepage_parameters = {{"d15", d15}, {"den_adel_alpha", 150.0}, {"den_adel_beta", 0.4}};
   return m;
 }
 

@@ -121,11 +121,7 @@ void expect_same_material(const SoilMaterial& m, const SoilMaterial& n) {
   EXPECT_EQ(m.artificial_stress, n.artificial_stress);
   EXPECT_EQ(m.fixed, n.fixed);
   EXPECT_EQ(m.seepage, n.seepage);
-  EXPECT_EQ(m.effective_diameter, n.effective_diameter);
-  EXPECT_EQ(m.d15, n.d15);
-  EXPECT_EQ(m.den_adel_alpha, n.den_adel_alpha);
-  EXPECT_EQ(m.den_adel_beta, n.den_adel_beta);
-  EXPECT_EQ(m.hydraulic_conductivity, n.hydraulic_conductivity);
+  EXPECT_EQ(m.seepage_parameters, n.seepage_parameters);
   EXPECT_EQ(m.variable_permeability, n.variable_permeability);
   EXPECT_EQ(m.wet_cohesion_loss, n.wet_cohesion_loss);
 }

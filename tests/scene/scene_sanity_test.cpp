@@ -1,11 +1,12 @@
 // "No silent nonsense" (issue 29, scene/scene_sanity.cpp): a scene whose every value is in range
 // but whose derived quantities are meaningless (overflow, underflow, an output interval far below
 // the time step, a porosity the solver would clamp) is refused at load, naming file:line:key.
+#include "scene/scene_sanity.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "scene/scene_sanity.h"
 #include "tests/scene/scene_examples.h"
 #include "tests/scene/scene_examples_soil.h"
 

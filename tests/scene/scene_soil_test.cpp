@@ -62,11 +62,7 @@ TEST(SceneSoil, GranularColumnGetsEveryDefault) {
   EXPECT_FALSE(m.artificial_stress);
   EXPECT_FALSE(m.fixed);
   EXPECT_EQ(m.seepage, "none");
-  EXPECT_EQ(m.effective_diameter, 0.0);
-  EXPECT_EQ(m.d15, 0.0);
-  EXPECT_EQ(m.den_adel_alpha, 150.0);
-  EXPECT_EQ(m.den_adel_beta, 0.4);
-  EXPECT_EQ(m.hydraulic_conductivity, 0.0);
+  EXPECT_TRUE(m.seepage_parameters.empty());  // no law, no law keys
   EXPECT_TRUE(m.variable_permeability);
   EXPECT_FALSE(m.wet_cohesion_loss);
 
@@ -130,18 +126,18 @@ TEST(SceneSoil, CoupledSceneHasBothPhases) {
   EXPECT_EQ(gravel.porosity, 0.35);
   EXPECT_TRUE(gravel.fixed);
   EXPECT_EQ(gravel.seepage, "forchheimer_den_adel");
-  EXPECT_EQ(gravel.d15, 0.01);
-  EXPECT_EQ(gravel.den_adel_alpha, 150.0);  // defaults filled for Forchheimer
-  EXPECT_EQ(gravel.den_adel_beta, 0.4);
+  EXPECT_EQ(gravel.seepage_parameter("d15"), 0.01);
+  EXPECT_EQ(gravel.seepage_parameter("den_adel_alpha"), 150.0);  // defaults filled for Forchheimer
+  EXPECT_EQ(gravel.seepage_parameter("den_adel_beta"), 0.4);
   EXPECT_TRUE(gravel.variable_permeability);
-  EXPECT_EQ(gravel.effective_diameter, 0.0);
+  EXPECT_EQ(gravel.seepage_parameters.size(), 3u);  // its law's keys only
   const SoilMaterial& sand = soil.materials[1];
   EXPECT_EQ(sand.cohesion, 500.0);
   EXPECT_EQ(sand.friction_angle_deg, 32.0);
   EXPECT_EQ(sand.dilatancy_angle_deg, 2.0);
   EXPECT_TRUE(sand.artificial_stress);
   EXPECT_EQ(sand.seepage, "darcy_kozeny_carman");
-  EXPECT_EQ(sand.effective_diameter, 0.0004);
+  EXPECT_EQ(sand.seepage_parameter("effective_diameter"), 0.0004);
   EXPECT_FALSE(sand.variable_permeability);
   EXPECT_TRUE(sand.wet_cohesion_loss);
   EXPECT_EQ(soil.material_index("sand"), 1);
@@ -200,13 +196,13 @@ TEST(SceneSoil, SeepageParametersFollowTheLaw) {
            "seepage = \"darcy_conductivity\"\nhydraulic_conductivity = 1e-4");
   const SoilMaterial sand = load_scene_text(text, "x.toml").soil->materials[1];
   EXPECT_EQ(sand.seepage, "darcy_conductivity");
-  EXPECT_EQ(sand.hydraulic_conductivity, 1e-4);
-  EXPECT_EQ(sand.effective_diameter, 0.0);
+  EXPECT_EQ(sand.seepage_parameter("hydraulic_conductivity"), 1e-4);
+  EXPECT_EQ(sand.seepage_parameters.count("effective_diameter"), 0u);
   // Overrides reach the new keys.
   const Scene s = load_scene_text(kSubmergedBed2D, "x.toml",
                                   {"soil.materials[0].den_adel_alpha=200", "run.max_steps=10",
                                    "walls[1].phases=[\"soil\", \"water\"]"});
-  EXPECT_EQ(s.soil->materials[0].den_adel_alpha, 200.0);
+  EXPECT_EQ(s.soil->materials[0].seepage_parameter("den_adel_alpha"), 200.0);
   EXPECT_EQ(s.run.max_steps, 10);
   EXPECT_EQ(s.walls[1].phases, (Strings{"soil", "water"}));
 }

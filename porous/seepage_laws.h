@@ -1,0 +1,112 @@
+// The seepage laws a soil material can name (soil.materials[].seepage), each registered once
+// here: its name, its equation and source, the material keys it reads (declared here, nowhere
+// else) and its coefficients a, b of eq. 13 as functions of the porosity. From this list the
+// scene schema takes the allowed names and the law keys (each shown only with its laws), the
+// term registry the interaction term seepage_<name>, and SeepageLaw (seepage_law.h) the
+// coefficients. Adding a law is one entry here and its test (docs/contributing.md, worked
+// example).
+#pragma once
+
+#include <functional>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "porous/permeability.h"
+#include "scene/scene_schema.h"
+#include "scene/scene_schema_builder.h"
+
+namespace porosph::porous {
+
+/// What a law's coefficients depend on besides the porosity.
+struct SeepageLawInputs {
+  const std::map<std::string, double>* parameters = nullptr;  ///< the law's keys, by name
+  double initial_porosity = 0.4;                              ///< n0
+  double gravity = 9.81;                                      ///< |g| [m/s^2]
+  double kinematic_viscosity = 1e-6;                          ///< nu of the water [m^2/s]
+
+  /// The value of one of the law's keys (std::out_of_range if the law did not declare it).
+  double operator[](const std::string& key) const { return parameters->at(key); }
+};
+
+struct SeepageLawSpec {
+  std::string name;     ///< the value of soil.materials[].seepage
+  std::string summary;  ///< equation and source
+  /// The material keys the law reads, paths "soil.materials[].<key>"; the schema shows each
+  /// only with the laws that declare it. Every one must be > 0 (SeepageLaw checks).
+  std::vector<scene::KeySpec> keys;
+  bool needs_viscosity = false;  ///< a water viscosity > 0 (water.viscosity)
+  /// a [s/m] and b [s^2/m^2] of eq. 13 at porosity n (0 < n < 1).
+  std::function<SeepageCoefficients(double n, const SeepageLawInputs&)> coefficients;
+};
+
+/// Every seepage law, in documentation order ("none", no seepage force, is not a law).
+inline std::vector<SeepageLawSpec> seepage_laws() {
+  using scene::schema_detail::Key;
+  using T = scene::ValueType;
+  const std::string m = "soil.materials[].";
+  std::vector<SeepageLawSpec> laws;
+  laws.push_back(
+      {"darcy_kozeny_carman",
+       "Darcy with the Kozeny-Carman permeability (seed paper eq. 14): k = (1/180) n^3 / (1 - n)^2 "
+       "(g / nu) d_e^2, a = 1 / k, b = 0.",
+       {Key(m + "effective_diameter", T::Float)
+            .unit("m")
+            .required()
+            .above(0)
+            .doc("Effective grain diameter d_e of Kozeny-Carman (eq. 14).")},
+       true,
+       [](double n, const SeepageLawInputs& in) {
+         return darcy_kozeny_carman(n, in["effective_diameter"], in.gravity,
+                                    in.kinematic_viscosity);
+       }});
+  laws.push_back(
+      {"darcy_conductivity",
+       "Darcy with a given hydraulic conductivity k0 at n0; with variable permeability k follows "
+       "the Kozeny-Carman porosity function, k(n) = k0 [n^3 / (1 - n)^2] / [n0^3 / (1 - n0)^2].",
+       {Key(m + "hydraulic_conductivity", T::Float)
+            .unit("m/s")
+            .required()
+            .above(0)
+            .doc("Darcy hydraulic conductivity at porosity n0.")},
+       false,
+       [](double n, const SeepageLawInputs& in) {
+         const auto shape = [](double x) { return x * x * x / ((1.0 - x) * (1.0 - x)); };
+         return darcy_constant(in["hydraulic_conductivity"] * shape(n) /
+                               shape(in.initial_porosity));
+       }});
+  laws.push_back(
+      {"forchheimer_den_adel",
+       "Forchheimer with Den Adel's coefficients (seed paper eq. 15): a = alpha (1 - n)^2 / n^3 "
+       "nu / (g d15^2), b = beta / n^2 / (g d15).",
+       {Key(m + "d15", T::Float)
+            .unit("m")
+            .required()
+            .above(0)
+            .doc("Grain diameter d15 (15 % finer by weight) of Den Adel (eq. 15)."),
+        Key(m + "den_adel_alpha", T::Float)
+            .fallback("150.0")
+            .above(0)
+            .doc("Den Adel coefficient alpha of the linear term (eq. 15)."),
+        Key(m + "den_adel_beta", T::Float)
+            .fallback("0.4")
+            .above(0)
+            .doc("Den Adel coefficient beta of the quadratic term (eq. 15).")},
+       true,
+       [](double n, const SeepageLawInputs& in) {
+         return forchheimer_den_adel(n, in["d15"], in.gravity, in.kinematic_viscosity,
+                                     in["den_adel_alpha"], in["den_adel_beta"]);
+       }});
+  return laws;
+}
+
+/// The law named `name` among `laws`, or nullptr.
+inline const SeepageLawSpec* find_seepage_law(const std::vector<SeepageLawSpec>& laws,
+                                              const std::string& name) {
+  for (const SeepageLawSpec& law : laws)
+    if (law.name == name) return &law;
+  return nullptr;
+}
+
+}  // namespace porosph::porous
