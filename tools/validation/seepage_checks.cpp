@@ -4,6 +4,8 @@
 #include <stdexcept>
 
 #include "porous/permeability.h"
+#include "porous/seepage_law.h"
+#include "porous/seepage_laws.h"
 #include "tools/validation/run_directory.h"
 
 namespace porosph::validation {
@@ -21,18 +23,20 @@ DarcyColumnCheck check_darcy_column(const std::string& run_dir) {
   const double n = m.at("porosity").get<double>();
   DarcyColumnCheck out;
   out.seepage = m.at("seepage").get<std::string>();
-  porous::SeepageCoefficients c;
-  if (out.seepage == "darcy_kozeny_carman") {
-    c = porous::darcy_kozeny_carman(n, m.at("effective_diameter").get<double>(), g, nu);
-  } else if (out.seepage == "darcy_conductivity") {
-    c = porous::darcy_constant(m.at("hydraulic_conductivity").get<double>());
-  } else if (out.seepage == "forchheimer_den_adel") {
-    c = porous::forchheimer_den_adel(n, m.at("d15").get<double>(), g, nu,
-                                     m.at("den_adel_alpha").get<double>(),
-                                     m.at("den_adel_beta").get<double>());
-  } else {
+  // Any registered law (porous/seepage_laws.h), at the initial porosity.
+  const std::vector<porous::SeepageLawSpec> laws = porous::seepage_laws();
+  const porous::SeepageLawSpec* law = porous::find_seepage_law(laws, out.seepage);
+  if (law == nullptr)
     throw std::runtime_error(run_dir + ": the first soil material has no seepage law");
-  }
+  scene::SoilMaterial material;
+  material.name = m.value("name", "");
+  material.porosity = n;
+  material.seepage = out.seepage;
+  material.variable_permeability = false;
+  for (const scene::KeySpec& key : law->keys)
+    material.seepage_parameters[key.name()] = m.at(key.name()).get<double>();
+  const porous::SeepageCoefficients c =
+      porous::SeepageLaw::from_material(material, g, nu).coefficients(n);
   out.a = c.a;
   out.b = c.b;
   // i = a q + b q^2 = 1.
