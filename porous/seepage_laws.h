@@ -98,6 +98,24 @@ inline std::vector<SeepageLawSpec> seepage_laws() {
          return forchheimer_den_adel(n, in["d15"], in.gravity, in.kinematic_viscosity,
                                      in["den_adel_alpha"], in["den_adel_beta"]);
        }});
+  laws.push_back(
+      {"forchheimer_ergun",
+       "Forchheimer with Ergun's (1952) packed-bed coefficients: a = 150 (1 - n)^2 / n^3 nu / "
+       "(g d^2), b = 1.75 (1 - n) / n^3 / (g d) (Ergun, Chem. Eng. Prog. 48, 89-94).",
+       {Key(m + "grain_diameter", T::Float)
+            .unit("m")
+            .required()
+            .above(0)
+            .doc("Mean grain diameter d of Ergun's equation.")},
+       true,
+       [](double n, const SeepageLawInputs& in) {
+         const double d = in["grain_diameter"];
+         SeepageCoefficients c;
+         c.a = 150.0 * (1.0 - n) * (1.0 - n) / (n * n * n) * in.kinematic_viscosity /
+               (in.gravity * d * d);
+         c.b = 1.75 * (1.0 - n) / (n * n * n) / (in.gravity * d);
+         return c;
+       }});
   return laws;
 }
 

@@ -98,5 +98,20 @@ TEST(SeepageLaws, DenAdelIsEq15) {
   EXPECT_EQ(c.b, e.b);
 }
 
+// Ergun (1952) for a bed of 2 mm grains at n = 0.4, by hand: a = 150 0.36 / 0.064 1e-6 / (9.81
+// 4e-6) = 21.50 s/m, b = 1.75 0.6 / 0.064 / (9.81 0.002) = 836.2 s^2/m^2; its linear term is Den
+// Adel's with alpha = 150 and d15 = d (the same Kozeny-Carman form).
+TEST(SeepageLaws, ErgunIsItsPackedBedEquation) {
+  const auto laws = seepage_laws();
+  scene::SoilMaterial m = material_of(*find_seepage_law(laws, "forchheimer_ergun"));
+  m.seepage_parameters["grain_diameter"] = 0.002;
+  const SeepageCoefficients c = SeepageLaw::from_material(m, 9.81, 1e-6).coefficients(0.4);
+  EXPECT_NEAR(c.a, 150.0 * 0.36 / 0.064 * 1e-6 / (9.81 * 4e-6), 1e-12 * c.a);
+  EXPECT_NEAR(c.b, 1.75 * 0.6 / 0.064 / (9.81 * 0.002), 1e-12 * c.b);
+  EXPECT_NEAR(c.a, 21.50, 0.01);
+  EXPECT_NEAR(c.b, 836.2, 0.1);
+  EXPECT_NEAR(c.a, forchheimer_den_adel(0.4, 0.002, 9.81, 1e-6, 150.0, 0.4).a, 1e-12 * c.a);
+}
+
 }  // namespace
 }  // namespace porosph::porous
