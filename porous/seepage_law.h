@@ -52,7 +52,6 @@ class SeepageLaw {
     SeepageLaw law;
     law.initial_porosity_ = m.porosity;
     law.variable_ = m.variable_permeability;
-    law.parameters_ = m.seepage_parameters;
     auto need = [&](double value, const std::string& what) {
       if (!(value > 0.0) || !std::isfinite(value)) {
         throw std::invalid_argument("soil material '" + m.name + "': seepage '" + m.seepage +
@@ -72,12 +71,9 @@ class SeepageLaw {
     }
     need(gravity, "gravity |g|");
     if (spec->needs_viscosity) need(kinematic_viscosity, "a water viscosity (water.viscosity)");
-    for (const scene::KeySpec& key : spec->keys) {
-      const auto it = law.parameters_.find(key.name());
-      need(it == law.parameters_.end() ? 0.0 : it->second, key.name());
-    }
-    law.coefficients_ = spec->coefficients;
-    law.inputs_ = {nullptr, m.porosity, gravity, kinematic_viscosity};
+    for (const scene::KeySpec& key : spec->keys) need(m.seepage_parameter(key.name()), key.name());
+    law.coefficients_ =
+        spec->bind({&m.seepage_parameters, m.porosity, gravity, kinematic_viscosity});
     return law;
   }
 
@@ -96,17 +92,13 @@ class SeepageLaw {
   /// a and b of eq. 13 for a particle of current porosity `particle_porosity` ({0, 0} if none).
   SeepageCoefficients coefficients(double particle_porosity) const {
     if (!coefficients_) return {};
-    SeepageLawInputs in = inputs_;
-    in.parameters = &parameters_;  // this object's copy (the law may have been moved)
-    return coefficients_(porosity_used(particle_porosity), in);
+    return coefficients_(porosity_used(particle_porosity));
   }
 
  private:
   double initial_porosity_ = 0.4;
   bool variable_ = false;
-  std::map<std::string, double> parameters_;
-  SeepageLawInputs inputs_;
-  std::function<SeepageCoefficients(double, const SeepageLawInputs&)> coefficients_;
+  std::function<SeepageCoefficients(double)> coefficients_;  ///< the law bound to the material
 };
 
 }  // namespace porosph::porous

@@ -37,8 +37,9 @@ struct SeepageLawSpec {
   /// only with the laws that declare it. Every one must be > 0 (SeepageLaw checks).
   std::vector<scene::KeySpec> keys;
   bool needs_viscosity = false;  ///< a water viscosity > 0 (water.viscosity)
-  /// a [s/m] and b [s^2/m^2] of eq. 13 at porosity n (0 < n < 1).
-  std::function<SeepageCoefficients(double n, const SeepageLawInputs&)> coefficients;
+  /// Binds the law to one material's inputs (read once, here): the function it returns gives a
+  /// [s/m] and b [s^2/m^2] of eq. 13 at porosity n (0 < n < 1), and is what runs per particle.
+  std::function<std::function<SeepageCoefficients(double n)>(const SeepageLawInputs&)> bind;
 };
 
 /// Every seepage law, in documentation order ("none", no seepage force, is not a law).
@@ -57,9 +58,9 @@ inline std::vector<SeepageLawSpec> seepage_laws() {
             .above(0)
             .doc("Effective grain diameter d_e of Kozeny-Carman (eq. 14).")},
        true,
-       [](double n, const SeepageLawInputs& in) {
-         return darcy_kozeny_carman(n, in["effective_diameter"], in.gravity,
-                                    in.kinematic_viscosity);
+       [](const SeepageLawInputs& in) {
+         const double d = in["effective_diameter"], g = in.gravity, nu = in.kinematic_viscosity;
+         return [=](double n) { return darcy_kozeny_carman(n, d, g, nu); };
        }});
   laws.push_back(
       {"darcy_conductivity",
@@ -71,10 +72,12 @@ inline std::vector<SeepageLawSpec> seepage_laws() {
             .above(0)
             .doc("Darcy hydraulic conductivity at porosity n0.")},
        false,
-       [](double n, const SeepageLawInputs& in) {
-         const auto shape = [](double x) { return x * x * x / ((1.0 - x) * (1.0 - x)); };
-         return darcy_constant(in["hydraulic_conductivity"] * shape(n) /
-                               shape(in.initial_porosity));
+       [](const SeepageLawInputs& in) {
+         const double k0 = in["hydraulic_conductivity"], n0 = in.initial_porosity;
+         return [=](double n) {
+           const auto shape = [](double x) { return x * x * x / ((1.0 - x) * (1.0 - x)); };
+           return darcy_constant(k0 * shape(n) / shape(n0));
+         };
        }});
   laws.push_back(
       {"forchheimer_den_adel",
@@ -94,9 +97,10 @@ inline std::vector<SeepageLawSpec> seepage_laws() {
             .above(0)
             .doc("Den Adel coefficient beta of the quadratic term (eq. 15).")},
        true,
-       [](double n, const SeepageLawInputs& in) {
-         return forchheimer_den_adel(n, in["d15"], in.gravity, in.kinematic_viscosity,
-                                     in["den_adel_alpha"], in["den_adel_beta"]);
+       [](const SeepageLawInputs& in) {
+         const double d15 = in["d15"], g = in.gravity, nu = in.kinematic_viscosity;
+         const double alpha = in["den_adel_alpha"], beta = in["den_adel_beta"];
+         return [=](double n) { return forchheimer_den_adel(n, d15, g, nu, alpha, beta); };
        }});
   laws.push_back(
       {"forchheimer_ergun",
@@ -108,13 +112,14 @@ inline std::vector<SeepageLawSpec> seepage_laws() {
             .above(0)
             .doc("Mean grain diameter d of Ergun's equation.")},
        true,
-       [](double n, const SeepageLawInputs& in) {
-         const double d = in["grain_diameter"];
-         SeepageCoefficients c;
-         c.a = 150.0 * (1.0 - n) * (1.0 - n) / (n * n * n) * in.kinematic_viscosity /
-               (in.gravity * d * d);
-         c.b = 1.75 * (1.0 - n) / (n * n * n) / (in.gravity * d);
-         return c;
+       [](const SeepageLawInputs& in) {
+         const double d = in["grain_diameter"], g = in.gravity, nu = in.kinematic_viscosity;
+         return [=](double n) {
+           SeepageCoefficients c;
+           c.a = 150.0 * (1.0 - n) * (1.0 - n) / (n * n * n) * nu / (g * d * d);
+           c.b = 1.75 * (1.0 - n) / (n * n * n) / (g * d);
+           return c;
+         };
        }});
   return laws;
 }
