@@ -38,8 +38,8 @@ inline SeepageCoefficients darcy_kozeny_carman(double porosity, double effective
 /// Darcy with a given constant conductivity k: a = 1/k, b = 0.
 inline SeepageCoefficients darcy_constant(double conductivity) { return {1.0 / conductivity, 0.0}; }
 
-/// Den Adel's empirical constants of eq. 15 as the seed paper uses them (the scene's defaults of
-/// den_adel_alpha / den_adel_beta, scene/scene_schema_soil.cpp, say the same).
+/// Den Adel's empirical constants of eq. 15 as the seed paper uses them: the defaults of the
+/// scene's den_adel_alpha / den_adel_beta (porous/seepage_laws.h takes them from here).
 inline constexpr double kDenAdelAlpha = 150.0;
 inline constexpr double kDenAdelBeta = 0.4;
 

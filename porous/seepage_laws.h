@@ -7,6 +7,7 @@
 // example).
 #pragma once
 
+#include <cstdio>
 #include <functional>
 #include <map>
 #include <stdexcept>
@@ -41,6 +42,15 @@ struct SeepageLawSpec {
   /// [s/m] and b [s^2/m^2] of eq. 13 at porosity n (0 < n < 1), and is what runs per particle.
   std::function<std::function<SeepageCoefficients(double n)>(const SeepageLawInputs&)> bind;
 };
+
+/// `value` as a TOML float ("150.0", "0.4"), for a default taken from a constant of the code.
+inline std::string toml_float(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.15g", value);
+  std::string out = text;
+  if (out.find_first_of(".eEn") == std::string::npos) out += ".0";
+  return out;
+}
 
 /// Every seepage law, in documentation order ("none", no seepage force, is not a law).
 inline std::vector<SeepageLawSpec> seepage_laws() {
@@ -89,11 +99,11 @@ inline std::vector<SeepageLawSpec> seepage_laws() {
             .above(0)
             .doc("Grain diameter d15 (15 % finer by weight) of Den Adel (eq. 15)."),
         Key(m + "den_adel_alpha", T::Float)
-            .fallback("150.0")
+            .fallback(toml_float(kDenAdelAlpha))
             .above(0)
             .doc("Den Adel coefficient alpha of the linear term (eq. 15)."),
         Key(m + "den_adel_beta", T::Float)
-            .fallback("0.4")
+            .fallback(toml_float(kDenAdelBeta))
             .above(0)
             .doc("Den Adel coefficient beta of the quadratic term (eq. 15).")},
        true,
