@@ -83,11 +83,9 @@ inline std::vector<SeepageLawSpec> seepage_laws() {
             .doc("Darcy hydraulic conductivity at porosity n0.")},
        false,
        [](const SeepageLawInputs& in) {
-         const double k0 = in["hydraulic_conductivity"], n0 = in.initial_porosity;
-         return [=](double n) {
-           const auto shape = [](double x) { return x * x * x / ((1.0 - x) * (1.0 - x)); };
-           return darcy_constant(k0 * shape(n) / shape(n0));
-         };
+         const auto shape = [](double x) { return x * x * x / ((1.0 - x) * (1.0 - x)); };
+         const double k0 = in["hydraulic_conductivity"], shape0 = shape(in.initial_porosity);
+         return [=](double n) { return darcy_constant(k0 * shape(n) / shape0); };
        }});
   laws.push_back(
       {"forchheimer_den_adel",

@@ -39,9 +39,12 @@ std::vector<std::string> active_terms(const Scene& scene, const std::string& pha
 }
 
 TermSwitches::TermSwitches(const Scene& scene, std::string phase) : phase_(std::move(phase)) {
-  for (const TermSpec& term : make_term_registry())
-    if (term.phase == phase_) known_.push_back(term.name);
-  active_ = active_terms(scene, phase_);
+  const bool present = has_phase(scene, phase_);  // also refuses an unknown phase
+  for (const TermSpec& term : make_term_registry()) {
+    if (term.phase != phase_) continue;
+    known_.push_back(term.name);
+    if (present && term.active(scene)) active_.push_back(term.name);
+  }
 }
 
 bool TermSwitches::operator()(const std::string& name) const {
