@@ -1,6 +1,6 @@
 // coupler: the PoroSPH command line (docs/design.md section 6).
 // clang-format off
-//   coupler run SCENE.toml [--out DIR] [--overwrite] [--set key=value ...] [--fluid-solver EXE] [--soil-solver EXE]
+//   coupler run SCENE.toml [--out DIR] [--overwrite] [--set key=value ...] [--water-solver EXE] [--soil-solver EXE]
 //   coupler run --attach --endpoint tcp://HOST:PORT SCENE.toml
 //   coupler run --resume DIR          continue DIR's run from its latest checkpoint
 //   coupler status DIR                running / completed / failed / died (docs/reliability.md)
@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "coupler/phase_slots.h"
 #include "coupler/run_session.h"
 #include "coupler/run_status.h"
 #include "coupler/scene_check.h"
@@ -40,8 +41,14 @@ int main(int argc, char** argv) {
   run->add_option("--set", run_options.overrides, "override a scene key: key=value (repeatable)")
       ->take_all()
       ->allow_extra_args(false);
-  run->add_option("--fluid-solver", run_options.fluid_solver, "water solver executable");
-  run->add_option("--soil-solver", run_options.soil_solver, "soil solver executable");
+  for (const porosph::coupler::PhaseSlot& slot : porosph::coupler::kPhaseSlots) {
+    const std::string phase = slot.phase;
+    run->add_option("--" + phase + "-solver", run_options.solver_overrides[phase],
+                    phase + " solver executable (default: " + slot.builtin_solver + ")");
+  }
+  // Before the phases had one name (issue 24) the water solver's option was --fluid-solver.
+  std::string deprecated_fluid_solver;
+  run->add_option("--fluid-solver", deprecated_fluid_solver)->group("");
   run->add_flag("--attach", run_options.attach,
                 "do not start solvers: wait for solvers started by hand at --endpoint (it "
                 "prints the run token they need in POROSPH_RUN_TOKEN)");
@@ -100,6 +107,16 @@ int main(int argc, char** argv) {
     if (run_options.attach && run_options.endpoint.empty()) {
       std::fprintf(stderr, "coupler: --attach needs --endpoint tcp://HOST:PORT\n");
       return porosph::coupler::kBadInput;
+    }
+    if (!deprecated_fluid_solver.empty()) {
+      if (!run_options.solver_overrides["water"].empty()) {
+        std::fprintf(stderr, "coupler: give --water-solver or --fluid-solver, not both\n");
+        return porosph::coupler::kBadInput;
+      }
+      std::fprintf(stderr,
+                   "coupler: --fluid-solver is deprecated, it is now --water-solver (the phase "
+                   "is called water everywhere)\n");
+      run_options.solver_overrides["water"] = deprecated_fluid_solver;
     }
     run_options.progress = !no_progress;
     return porosph::coupler::run_scene(run_options);

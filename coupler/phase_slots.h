@@ -15,10 +15,15 @@ struct PhaseSlot {
   const char* phase;           ///< as in the scene and the wire: "water", "soil"
   const char* builtin_solver;  ///< the executable started when nothing else is named
   const char* snapshot_file;   ///< the phase's snapshot file in the run directory
+  /// The snapshot file's name in runs written before the phase had one name (issue 24), which a
+  /// resume renames; nullptr: never renamed.
+  const char* former_snapshot_file;
 };
 
-inline constexpr PhaseSlot kPhaseSlots[] = {{"water", "fluid_solver", "fluid.h5"},
-                                            {"soil", "soil_solver", "soil.h5"}};
+/// The built-in water solver keeps the program name of the repository's layout (fluid_solver/,
+/// docs/design.md "Names"); everything a run writes calls the phase water.
+inline constexpr PhaseSlot kPhaseSlots[] = {{"water", "fluid_solver", "water.h5", "fluid.h5"},
+                                            {"soil", "soil_solver", "soil.h5", nullptr}};
 
 /// The slot of `phase`; throws std::invalid_argument for a phase the coupler has no slot for.
 inline const PhaseSlot& phase_slot(const std::string& phase) {

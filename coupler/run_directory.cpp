@@ -41,8 +41,10 @@ std::string describe_owner(const std::string& owner) {
 
 /// What marks an earlier run in a directory (README.md "The run directory"). A checkpoint/ without
 /// a manifest holds no usable checkpoint: a new run replaces its files before naming them.
-constexpr const char* kRunOutputs[] = {"run.json", "timeseries.csv", "run.xdmf",
-                                       "fluid.h5", "soil.h5",        "checkpoint/latest.json"};
+/// fluid.h5: the water's snapshots in runs written before issue 24 (coupler/phase_slots.h).
+constexpr const char* kRunOutputs[] = {
+    "run.json", "timeseries.csv",        "run.xdmf", "water.h5", "soil.h5",
+    "fluid.h5", "checkpoint/latest.json"};
 
 }  // namespace
 

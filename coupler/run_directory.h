@@ -44,8 +44,8 @@ struct LockProbe {
 };
 LockProbe probe_run_directory_lock(const std::string& dir);
 
-/// The outputs of an earlier run present in `dir` (run.json, timeseries.csv, run.xdmf, fluid.h5,
-/// soil.h5, checkpoint/latest.json): the names, empty when there are none.
+/// The outputs of an earlier run present in `dir` (run.json, timeseries.csv, run.xdmf, water.h5,
+/// soil.h5, fluid.h5 of older runs, checkpoint/latest.json): the names, empty when there are none.
 std::vector<std::string> earlier_run_outputs(const std::string& dir);
 
 /// --overwrite: removes the earlier run's outputs and its checkpoint/ directory. Throws

@@ -187,9 +187,9 @@ std::vector<io::XdmfField> snapshot_fields_of_phase(const std::string& phase, in
                                                     bool pore_fields = false);
 
 /// The name the built-in water solver gives in its Hello (fluid_solver/main.cpp).
-inline constexpr const char* kBuiltInWaterSolverName = "porosph-fluid";
+inline constexpr const char* kBuiltInWaterSolverName = "porosph-water";
 
-/// The HDF5 file name of a phase in the run directory ("fluid.h5", "soil.h5").
+/// The HDF5 file name of a phase in the run directory ("water.h5", "soil.h5").
 std::string h5_file_of_phase(const std::string& phase);
 
 }  // namespace porosph::coupler

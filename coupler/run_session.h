@@ -1,6 +1,7 @@
 // `coupler run`: one coupled run from scene to run directory (docs/design.md sections 1, 4, 6).
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -10,11 +11,12 @@ struct RunOptions {
   std::string scene_path;
   std::string out_dir;                 ///< default: runs/<scene name>
   std::vector<std::string> overrides;  ///< "--set a.b=value"
-  std::string fluid_solver;            ///< executable override for the water phase
-  std::string soil_solver;             ///< executable override for the soil phase
-  /// The override of `phase` (--fluid-solver, --soil-solver); empty: none.
-  const std::string& solver_override(const std::string& phase) const {
-    return phase == "water" ? fluid_solver : soil_solver;
+  /// phase -> solver executable named on the command line (--<phase>-solver EXE).
+  std::map<std::string, std::string> solver_overrides;
+  /// The override of `phase`; empty: none.
+  std::string solver_override(const std::string& phase) const {
+    const auto found = solver_overrides.find(phase);
+    return found == solver_overrides.end() ? std::string() : found->second;
   }
   bool attach = false;   ///< solvers are started by hand and connect to `endpoint`
   std::string endpoint;  ///< default: a fresh ipc:// path

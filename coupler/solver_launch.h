@@ -21,7 +21,7 @@ struct SolverCommand {
   bool user_named = false;        ///< false: the built-in fluid_solver / soil_solver
 };
 
-/// `command_line` (--fluid-solver / --soil-solver) wins over the scene (water.solver /
+/// `command_line` (--water-solver / --soil-solver) wins over the scene (water.solver /
 /// soil.solver); neither names one: the built-in solver. A command may carry its own arguments,
 /// split at spaces. Throws std::invalid_argument for a command of only spaces.
 SolverCommand resolve_solver_command(const std::string& phase, const std::string& command_line,

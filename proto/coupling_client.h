@@ -18,7 +18,7 @@ inline constexpr std::uint32_t kProtocolVersion = 1;
 
 struct SolverIdentity {
   std::string phase;  ///< "water" | "soil"
-  std::string name;   ///< e.g. "porosph-fluid"
+  std::string name;   ///< e.g. "porosph-water"
   std::string version;
   /// Announced in Hello. Leave it at kProtocolVersion; the test dummies override it to exercise the
   /// coupler's version check.

@@ -40,7 +40,7 @@ void expect_water_run_directory(const CaseRun& run, std::size_t outputs) {
   }
   EXPECT_EQ(series.column("t").size(), outputs);
 
-  io::SnapshotReader h5(run.out + "/fluid.h5");
+  io::SnapshotReader h5(run.out + "/water.h5");
   const auto snapshots = h5.snapshots();
   ASSERT_EQ(snapshots.size(), outputs);
   const auto last = snapshots.back();

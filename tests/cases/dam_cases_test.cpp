@@ -26,7 +26,7 @@ void expect_coupled_contract(const CaseRun& run) {
     EXPECT_LT(mass.at("relative_imbalance").get<double>(), 1e-12) << phase << " " << mass.dump();
   }
   EXPECT_LT(r.at("ledger").at("relative_imbalance").get<double>(), 1e-10);
-  EXPECT_TRUE(std::filesystem::exists(run.out + "/fluid.h5"));
+  EXPECT_TRUE(std::filesystem::exists(run.out + "/water.h5"));
   EXPECT_TRUE(std::filesystem::exists(run.out + "/soil.h5"));
   const auto problems = test::check_xdmf_references(run.out + "/run.xdmf");
   EXPECT_TRUE(problems.empty()) << problems.front();

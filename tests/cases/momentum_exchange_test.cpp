@@ -98,7 +98,7 @@ void expect_momentum_kept(bool implicit_drag) {
   ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
   ASSERT_EQ(run.record.at("steps").get<int>(), 1000);
   const double dp2 = 0.005 * 0.005;
-  const auto water = momenta(run.out + "/fluid.h5", 1000.0 * dp2);
+  const auto water = momenta(run.out + "/water.h5", 1000.0 * dp2);
   const auto soil = momenta(run.out + "/soil.h5", 1600.0 * dp2);
   ASSERT_EQ(water.size(), soil.size());
   ASSERT_GT(water.size(), 5u);

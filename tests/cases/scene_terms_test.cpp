@@ -47,7 +47,7 @@ TEST(SceneTerms, WaterOnlySceneStartsOnlyTheWaterSolver) {
 
 TEST(SceneTerms, SoilOnlySceneStartsOnlyTheSoilSolver) {
   const auto run = run_case("granular_collapse", {"run.max_steps=5"});
-  expect_one_phase(run, "soil", "fluid.h5");
+  expect_one_phase(run, "soil", "water.h5");
   const auto terms = terms_of(run.record, "soil");
   EXPECT_TRUE(has(terms, "drucker_prager_return"));
   EXPECT_TRUE(has(terms, "artificial_viscosity"));

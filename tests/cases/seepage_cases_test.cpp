@@ -48,7 +48,7 @@ void expect_coupled_run_directory(const CaseRun& run) {
       EXPECT_NEAR(mass[i], expected, 1e-9 * expected) << phase << " row " << i;
     }
   }
-  EXPECT_TRUE(std::filesystem::exists(run.out + "/fluid.h5"));
+  EXPECT_TRUE(std::filesystem::exists(run.out + "/water.h5"));
   EXPECT_TRUE(std::filesystem::exists(run.out + "/soil.h5"));
   const auto problems = test::check_xdmf_references(run.out + "/run.xdmf");
   EXPECT_TRUE(problems.empty()) << problems.front();

@@ -18,11 +18,11 @@ void expect_soil_run_directory(const CaseRun& run, std::size_t outputs) {
   ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
   const auto& r = run.record;
   EXPECT_EQ(r.at("status"), "completed");
-  // Only the soil solver ran: no water phase, no fluid.h5.
+  // Only the soil solver ran: no water phase, no water.h5.
   ASSERT_EQ(r.at("phases").size(), 1u) << r.at("phases").dump();
   const auto& soil = r.at("phases").at("soil");
   EXPECT_NE(soil.at("executable").get<std::string>().find("soil_solver"), std::string::npos);
-  EXPECT_FALSE(std::filesystem::exists(run.out + "/fluid.h5"));
+  EXPECT_FALSE(std::filesystem::exists(run.out + "/water.h5"));
   // Mass: nothing leaves a closed container, so the free mass is exactly conserved.
   EXPECT_NEAR(soil.at("mass").at("final").get<double>(),
               soil.at("mass").at("initial").get<double>(),

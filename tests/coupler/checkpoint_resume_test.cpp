@@ -175,10 +175,12 @@ std::size_t rows_before_checkpoint(const std::string& out) {
 /// timeseries.csv (so the resume must drop output), SIGKILLs the coupler (`victim` empty) or the
 /// solver of phase `victim`; checks that everything stops (a killed solver: the coupler exits 1
 /// within 5 s naming the phase and the signal, the other solvers go within 5 s), and resumes.
-/// Returns the resumed run's directory.
+/// `as_older_run`: before resuming, the water's snapshots are renamed to fluid.h5, their name
+/// before issue 24, which the resume must rename back. Returns the resumed run's directory.
 std::string kill_after_checkpoint_and_resume(const std::string& name,
                                              std::vector<std::string> (*scene)(const std::string&),
-                                             const std::string& victim = "") {
+                                             const std::string& victim = "",
+                                             bool as_older_run = false) {
   single_threaded();
   const std::string dir = fresh_dir("killed-" + name + (victim.empty() ? "" : "-" + victim));
   const std::string out = dir + "/out";
@@ -207,16 +209,25 @@ std::string kill_after_checkpoint_and_resume(const std::string& name,
     EXPECT_NE(message.find(victim), std::string::npos) << message;
     EXPECT_NE(message.find("signal 9"), std::string::npos) << message;
   }
+  if (as_older_run) std::filesystem::rename(out + "/water.h5", out + "/fluid.h5");
   const CommandResult resumed =
       run_process({bin("coupler"), "run", "--resume", out, "--no-progress"}, dir + "/resume.txt");
   EXPECT_EQ(resumed.exit_code, 0) << resumed.output;
   EXPECT_NE(resumed.output.find("resuming"), std::string::npos) << resumed.output;
+  if (as_older_run) {
+    EXPECT_NE(resumed.output.find("renamed fluid.h5 to water.h5"), std::string::npos)
+        << resumed.output;
+    EXPECT_FALSE(std::filesystem::exists(out + "/fluid.h5"));
+  }
   return out;
 }
 
+// The killed run is also made to look like one written before issue 24 (its water snapshots in
+// fluid.h5): the resume renames the file and appends to it.
 TEST(CheckpointResume, KilledWaterRunResumesToTheSameResult) {
   const std::string& reference = reference_run("dam_break", dam_break_run);
-  const std::string out = kill_after_checkpoint_and_resume("dam_break", dam_break_run);
+  const std::string out =
+      kill_after_checkpoint_and_resume("dam_break", dam_break_run, "", /*as_older_run=*/true);
   const auto record = read_json(out + "/run.json");
   EXPECT_EQ(record.at("status"), "completed");
   EXPECT_EQ(record.at("resumes"), 1);
@@ -224,7 +235,7 @@ TEST(CheckpointResume, KilledWaterRunResumesToTheSameResult) {
   EXPECT_EQ(record.at("steps"), expected.at("steps"));
   EXPECT_EQ(record.at("simulated_time"), expected.at("simulated_time"));
   expect_same_timeseries(reference, out);
-  expect_same_snapshots(reference, out, "fluid.h5",
+  expect_same_snapshots(reference, out, "water.h5",
                         {"position", "velocity", "density", "pressure"});
   EXPECT_NE(read_text(out + "/run.xdmf").find("000010"), std::string::npos);
   // Rows at t = 0, 1, ..., 40 ms; snapshots at 0, 4, ..., 40 ms: independent of each other.
@@ -235,7 +246,7 @@ TEST(CheckpointResume, KilledWaterRunResumesToTheSameResult) {
     EXPECT_GE(rows[r][0], 1e-3 * static_cast<double>(r) - 1e-12) << r;
     EXPECT_LT(rows[r][0], 1e-3 * static_cast<double>(r) + 1e-4) << r;
   }
-  EXPECT_EQ(io::SnapshotReader(out + "/fluid.h5").snapshots().size(), 11u);
+  EXPECT_EQ(io::SnapshotReader(out + "/water.h5").snapshots().size(), 11u);
 }
 
 TEST(CheckpointResume, KilledCoupledRunResumesSoilStateAndLedger) {
@@ -282,7 +293,7 @@ TEST(CheckpointResume, KilledCoupledRunResumesSoilStateAndLedger) {
   EXPECT_EQ(record.at("interaction").at("evaluations"),
             expected.at("interaction").at("evaluations"));
   expect_same_timeseries(reference, out);
-  expect_same_snapshots(reference, out, "fluid.h5", {"position", "velocity", "density"});
+  expect_same_snapshots(reference, out, "water.h5", {"position", "velocity", "density"});
   expect_same_snapshots(reference, out, "soil.h5",
                         {"position", "velocity", "density", "stress", "porosity", "plastic_strain",
                          "displacement", "saturation"});
@@ -298,7 +309,7 @@ TEST(CheckpointResume, KilledSolverStopsTheCoupledRunAndTheResumeMatches) {
   EXPECT_EQ(record.at("status"), "completed");
   EXPECT_EQ(record.at("steps"), read_json(reference + "/run.json").at("steps"));
   expect_same_timeseries(reference, out);
-  expect_same_snapshots(reference, out, "fluid.h5", {"position", "velocity", "density"});
+  expect_same_snapshots(reference, out, "water.h5", {"position", "velocity", "density"});
   expect_same_snapshots(reference, out, "soil.h5", {"position", "velocity", "stress", "porosity"});
 }
 
@@ -344,7 +355,7 @@ TEST(CheckpointResume, SigtermWritesACheckpointAndTheResumeCompletes) {
   EXPECT_EQ(record.at("status"), "completed");
   EXPECT_GT(record.at("wall_seconds").at("water").at("total").get<double>(), wall_before);
   expect_same_timeseries(reference, out);
-  expect_same_snapshots(reference, out, "fluid.h5",
+  expect_same_snapshots(reference, out, "water.h5",
                         {"position", "velocity", "density", "pressure"});
 }
 

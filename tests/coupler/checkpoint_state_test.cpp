@@ -57,7 +57,7 @@ RunRecord sample_record() {
   r.observables["front"] = std::nan("");
   PhaseRecord& water = r.phases["water"];
   water.phase = "water";
-  water.h5_file = "fluid.h5";
+  water.h5_file = "water.h5";
   water.initial.mass = 12.345678901234567;
   water.initial.momentum = {0.1, -0.7};
   water.initial.observables["front"] = 0.05;

@@ -34,7 +34,7 @@ CouplerRun run_with_dummy(const std::string& name, const std::string& dummy_flag
                                    scene,
                                    "--out",
                                    run.dir + "/out",
-                                   "--fluid-solver",
+                                   "--water-solver",
                                    bin("dummy_solver") + " --phase water " + dummy_flags,
                                    "--no-progress"};
   argv.insert(argv.end(), extra.begin(), extra.end());
@@ -126,7 +126,7 @@ material = "sand"
 )";
   const std::string scene = write_text(dir + "/scene.toml", scene_text);
   const auto result =
-      run_process({bin("coupler"), "run", scene, "--out", dir + "/out", "--fluid-solver",
+      run_process({bin("coupler"), "run", scene, "--out", dir + "/out", "--water-solver",
                    bin("dummy_solver") + " --phase water", "--soil-solver",
                    bin("dummy_solver") + " --phase soil --hang-at-step 4", "--no-progress"},
                   dir + "/log.txt", 60);
@@ -144,7 +144,7 @@ TEST(CouplerRunFaults, ProtocolVersionMismatchIsRefused) {
 
 /// Starts a run whose dummy solver hangs at step 2 (with a long timeout), in the background.
 pid_t start_hanging_run(const std::string& dir, const std::string& scene) {
-  return start_process({bin("coupler"), "run", scene, "--out", dir + "/out", "--fluid-solver",
+  return start_process({bin("coupler"), "run", scene, "--out", dir + "/out", "--water-solver",
                         bin("dummy_solver") + " --phase water --hang-at-step 2", "--no-progress",
                         "--set", "run.solver_timeout=30"},
                        dir + "/log.txt");
@@ -192,7 +192,7 @@ TEST(CouplerRunFaults, TerminatedCouplerStopsABusyRun) {
   const std::string dir = fresh_dir("terminated-coupler");
   const std::string scene = write_text(dir + "/scene.toml", kScene);
   const pid_t coupler =
-      start_process({bin("coupler"), "run", scene, "--out", dir + "/out", "--fluid-solver",
+      start_process({bin("coupler"), "run", scene, "--out", dir + "/out", "--water-solver",
                      bin("dummy_solver") + " --phase water", "--no-progress", "--set",
                      "run.end_time=1000", "--set", "run.output_interval=100"},
                     dir + "/log.txt");
@@ -247,10 +247,30 @@ TEST(CouplerRunInput, UnknownSolverExecutableExitsTwo) {
   const std::string dir = fresh_dir("no-solver");
   const std::string scene = write_text(dir + "/scene.toml", kScene);
   const auto result = run_process({bin("coupler"), "run", scene, "--out", dir + "/out",
-                                   "--fluid-solver", "/nonexistent/solver"},
+                                   "--water-solver", "/nonexistent/solver"},
                                   dir + "/log.txt");
   EXPECT_EQ(result.exit_code, 2) << result.output;
   EXPECT_NE(result.output.find("/nonexistent/solver"), std::string::npos) << result.output;
+}
+
+// --fluid-solver, the option's name before the phase had one name (issue 24), still names the
+// water solver, with a deprecation message; given with --water-solver it is refused.
+TEST(CouplerRunInput, DeprecatedFluidSolverOptionNamesTheWaterSolver) {
+  const std::string dir = fresh_dir("fluid-solver-option");
+  const std::string scene = write_text(dir + "/scene.toml", kScene);
+  const auto alias = run_process({bin("coupler"), "run", scene, "--out", dir + "/out",
+                                  "--fluid-solver", "/nonexistent/solver"},
+                                 dir + "/log.txt");
+  EXPECT_EQ(alias.exit_code, 2) << alias.output;
+  EXPECT_NE(alias.output.find("--fluid-solver is deprecated"), std::string::npos) << alias.output;
+  EXPECT_NE(alias.output.find("cannot find the water solver executable '/nonexistent/solver'"),
+            std::string::npos)
+      << alias.output;
+  const auto both = run_process({bin("coupler"), "run", scene, "--out", dir + "/out2",
+                                 "--fluid-solver", "/a", "--water-solver", "/b"},
+                                dir + "/log2.txt");
+  EXPECT_EQ(both.exit_code, 2) << both.output;
+  EXPECT_NE(both.output.find("not both"), std::string::npos) << both.output;
 }
 
 TEST(CouplerRunInput, CheckPrintsTheResolvedScene) {

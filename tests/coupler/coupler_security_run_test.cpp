@@ -25,7 +25,7 @@ std::vector<std::string> run_argv(const std::string& dir, std::vector<std::strin
                                                               " --phase water") {
   std::vector<std::string> argv = {
       bin("coupler"), "run",          write_text(dir + "/scene.toml", kScene),
-      "--out",        dir + "/out",   "--fluid-solver",
+      "--out",        dir + "/out",   "--water-solver",
       solver,         "--no-progress"};
   argv.insert(argv.end(), extra.begin(), extra.end());
   return argv;

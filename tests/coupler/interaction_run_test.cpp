@@ -85,7 +85,7 @@ CouplerRunResult run_two_dummies(const std::string& name, const std::string& sce
                                    "--out",
                                    run.out,
                                    "--no-progress",
-                                   "--fluid-solver",
+                                   "--water-solver",
                                    bin("dummy_solver") + " --phase water --overlap 10"};
   if (with_soil) {
     argv.insert(argv.end(), {"--soil-solver", bin("dummy_solver") + " --phase soil --overlap 10"});

@@ -64,9 +64,9 @@ TEST(ClaimRunDirectory, AnEarlierRunIsRefusedOrRemovedWithOverwrite) {
   const std::string dir = fresh_dir("claim");
   EXPECT_NO_THROW(claim_run_directory(dir, false));  // empty: fine (and the lock file is no run)
   write(dir + "/run.json", "{}");
-  write(dir + "/fluid.h5", "");
+  write(dir + "/water.h5", "");
   fs::create_directories(dir + "/checkpoint");
-  EXPECT_EQ(earlier_run_outputs(dir), (std::vector<std::string>{"run.json", "fluid.h5"}));
+  EXPECT_EQ(earlier_run_outputs(dir), (std::vector<std::string>{"run.json", "water.h5"}));
   write(dir + "/checkpoint/latest.json", "{}");
   write(dir + "/scene.toml", "kept");
   EXPECT_THROW(claim_run_directory(dir, false), RunDirectoryError);

@@ -32,7 +32,7 @@ std::vector<std::string> dummy_run(const std::string& scene, const std::string& 
                                    scene,
                                    "--out",
                                    out,
-                                   "--fluid-solver",
+                                   "--water-solver",
                                    bin("dummy_solver") + " --phase water " + dummy_flags,
                                    "--no-progress"};
   argv.insert(argv.end(), extra.begin(), extra.end());

@@ -95,7 +95,7 @@ TEST(CheckpointFile, AnUncommittedWriterLeavesThePreviousFile) {
 
 TEST(SnapshotWriterResume, DropsTheSnapshotsFromTheFirstDroppedIndex) {
   ScratchDir dir;
-  const std::string path = dir.file("fluid.h5");
+  const std::string path = dir.file("water.h5");
   const std::vector<double> density = {1000.0, 1001.0};
   {
     SnapshotWriter writer(path);

@@ -93,13 +93,13 @@ TEST(SnapshotWriter, RoundTripsEveryFieldTypeIncludingAnEmptySnapshot) {
   const SampleSnapshot third = make_sample(3, 2, 2);
   const double times[] = {0.0, 0.1, 0.30000000000000004};  // 0.1 and 0.1+0.2 are inexact
   {
-    SnapshotWriter writer(dir.file("fluid.h5"));
-    EXPECT_EQ(writer.path(), dir.file("fluid.h5"));
+    SnapshotWriter writer(dir.file("water.h5"));
+    EXPECT_EQ(writer.path(), dir.file("water.h5"));
     writer.write(0, times[0], first.views());
     writer.write(1, times[1], empty.views());
     writer.write(12, times[2], third.views());
   }
-  SnapshotReader reader(dir.file("fluid.h5"));
+  SnapshotReader reader(dir.file("water.h5"));
   const std::vector<SnapshotInfo> snapshots = reader.snapshots();
   ASSERT_EQ(snapshots.size(), 3u);
   const std::uint32_t indices[] = {0, 1, 12};
@@ -127,14 +127,14 @@ TEST(SnapshotWriter, WaterAndSoilWritersWorkSideBySide) {
   const SampleSnapshot water = make_sample(4, 2, 1);
   const SampleSnapshot soil = make_sample(6, 2, 2);
   {
-    SnapshotWriter fluid(dir.file("fluid.h5"));
+    SnapshotWriter fluid(dir.file("water.h5"));
     SnapshotWriter soil_writer(dir.file("soil.h5"));
     for (std::uint32_t index = 0; index < 2; ++index) {
       fluid.write(index, 0.5 * index, water.views());
       soil_writer.write(index, 0.5 * index, soil.views());
     }
   }
-  SnapshotReader fluid(dir.file("fluid.h5"));
+  SnapshotReader fluid(dir.file("water.h5"));
   SnapshotReader soil_reader(dir.file("soil.h5"));
   EXPECT_EQ(fluid.snapshots().size(), 2u);
   expect_round_trip(fluid, 1, water);
@@ -143,7 +143,7 @@ TEST(SnapshotWriter, WaterAndSoilWritersWorkSideBySide) {
 
 TEST(SnapshotWriter, UnwritablePathThrowsNamingThePath) {
   ScratchDir dir;
-  const std::string missing_folder = dir.file("no_such_folder/fluid.h5");
+  const std::string missing_folder = dir.file("no_such_folder/water.h5");
   EXPECT_NE(error_of([&] { SnapshotWriter writer(missing_folder); }).find(missing_folder),
             std::string::npos);
   // A folder cannot be truncated into a file (this also holds when the tests run as root).
@@ -153,7 +153,7 @@ TEST(SnapshotWriter, UnwritablePathThrowsNamingThePath) {
 
 TEST(SnapshotWriter, MalformedFieldsThrowAndWriteNothing) {
   ScratchDir dir;
-  const std::string path = dir.file("fluid.h5");
+  const std::string path = dir.file("water.h5");
   SnapshotWriter writer(path);
   const std::vector<double> values = {1, 2, 3};
   const std::vector<std::int64_t> ids = {1, 2, 3};
@@ -190,7 +190,7 @@ TEST(SnapshotWriter, MalformedFieldsThrowAndWriteNothing) {
 
 TEST(SnapshotReader, FailuresNameTheFileAndTheDataset) {
   ScratchDir dir;
-  const std::string path = dir.file("fluid.h5");
+  const std::string path = dir.file("water.h5");
   SnapshotWriter(path).write(2, 0.25, make_sample(3, 2, 0).views());
   SnapshotReader reader(path);
   const std::string wrong_type = error_of([&] { reader.read_i64(2, "density"); });
@@ -228,13 +228,13 @@ TEST(SnapshotWriter, ClosesEveryHdf5Id) {
   const hid_t type_before = marker(H5I_DATATYPE);
   ASSERT_EQ(H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL), 0);
   {
-    SnapshotWriter writer(dir.file("fluid.h5"));
+    SnapshotWriter writer(dir.file("water.h5"));
     writer.write(0, 0.0, sample.views());
     EXPECT_THROW(writer.write(0, 0.0, sample.views()), std::runtime_error);
     writer.write(1, 0.1, make_sample(0, 2, 0).views());
     // Only the file itself stays open between snapshots: no group, dataset or attribute.
     EXPECT_EQ(H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL), 1);
-    SnapshotReader reader(dir.file("fluid.h5"));
+    SnapshotReader reader(dir.file("water.h5"));
     reader.snapshots();
     reader.fields(1);
     reader.read_f64(0, "stress");
@@ -250,7 +250,7 @@ TEST(SnapshotWriter, ClosesEveryHdf5Id) {
 
 TEST(SnapshotWriter, SnapshotsSurviveAProcessThatDiesWithoutClosingTheFile) {
   ScratchDir dir;
-  const std::string path = dir.file("fluid.h5");
+  const std::string path = dir.file("water.h5");
   const SampleSnapshot sample = make_sample(4, 2, 3);
   const pid_t child = fork();
   ASSERT_GE(child, 0);
@@ -274,7 +274,7 @@ TEST(SnapshotWriter, SnapshotsSurviveAProcessThatDiesWithoutClosingTheFile) {
 // snapshot in /snapshots nor anywhere else, and the index can be written again (issue 29).
 TEST(SnapshotWriter, AWriteThatFailsHalfWayLeavesNoHalfSnapshot) {
   ScratchDir dir;
-  const std::string path = dir.file("fluid.h5");
+  const std::string path = dir.file("water.h5");
   const std::vector<double> values = {1, 2, 3};
   {
     SnapshotWriter writer(path);

@@ -43,7 +43,7 @@ XdmfPhaseSeries write_phase(const std::string& h5_path, const std::string& h5_na
 
 /// Fluid at outputs 0, 1, 2 (output 1 empty); soil at outputs 0 and 2 only.
 std::vector<XdmfPhaseSeries> write_two_phases(const ScratchDir& dir) {
-  return {write_phase(dir.file("fluid.h5"), "fluid.h5", "fluid", 2,
+  return {write_phase(dir.file("water.h5"), "water.h5", "fluid", 2,
                       {{0, 0.0, 4}, {1, 0.1, 0}, {2, 0.2, 3}}),
           write_phase(dir.file("soil.h5"), "soil.h5", "soil", 2, {{0, 0.0, 6}, {2, 0.2, 5}})};
 }
@@ -161,7 +161,7 @@ TEST(CheckXdmfReferences, ReportsEveryKindOfMismatch) {
   };
   auto wrong_count = good;
   wrong_count[0].snapshots[2].particle_count = 4;  // the dataset has 3 rows
-  EXPECT_NE(problems_with(wrong_count).find("fluid.h5:/snapshots/000002/position"),
+  EXPECT_NE(problems_with(wrong_count).find("water.h5:/snapshots/000002/position"),
             std::string::npos);
   auto wrong_type = good;
   wrong_type[1].fields[1].number_type = "Int";  // density is Float 8
@@ -174,7 +174,7 @@ TEST(CheckXdmfReferences, ReportsEveryKindOfMismatch) {
   EXPECT_NE(problems_with(missing_field).find("no such dataset"), std::string::npos);
   auto missing_index = good;
   missing_index[0].snapshots.push_back({3, 0.3, 2});
-  EXPECT_NE(problems_with(missing_index).find("fluid.h5:/snapshots/000003/position"),
+  EXPECT_NE(problems_with(missing_index).find("water.h5:/snapshots/000003/position"),
             std::string::npos);
   auto missing_file = good;
   missing_file[1].h5_file = "clay.h5";

@@ -67,7 +67,7 @@ TEST(PythonSolverRun, ASolverThatWritesNoSnapshotFileIsLeftOutOfTheIndex) {
   EXPECT_NE(run.result.output.find("the soil solver wrote no soil.h5"), std::string::npos)
       << run.result.output;
   const std::string xdmf = read_text(run.out + "/run.xdmf");
-  EXPECT_NE(xdmf.find("fluid.h5"), std::string::npos);
+  EXPECT_NE(xdmf.find("water.h5"), std::string::npos);
   EXPECT_EQ(xdmf.find("soil.h5"), std::string::npos);
   const auto problems = test::check_xdmf_references(run.out + "/run.xdmf");
   EXPECT_TRUE(problems.empty()) << problems.front();

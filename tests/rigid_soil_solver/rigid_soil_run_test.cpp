@@ -75,10 +75,10 @@ TEST(RigidSoilRun, DarcyColumnFollowsDarcysLaw) {
   EXPECT_FALSE(soil.exists("/static/saturation"));
   EXPECT_FALSE(soil.exists("/static/absorbed_impulse"));
 
-  // fluid.h5 (docs/water-in-soil.md): the bed fills the periodic box, so the water sees the bed's
+  // water.h5 (docs/water-in-soil.md): the bed fills the periodic box, so the water sees the bed's
   // porosity 0.4 everywhere (to the kernel sum's error); its velocity is the Darcy velocity q and
   // pore_velocity = q / n, whose mean is the Darcy velocity over n0.
-  io::SnapshotReader fluid(run.out + "/fluid.h5");
+  io::SnapshotReader fluid(run.out + "/water.h5");
   const auto water_last = fluid.snapshots().back().index;
   const auto porosity = fluid.read_f64(water_last, "porosity").values;
   const auto velocity = fluid.read_f64(water_last, "velocity").values;

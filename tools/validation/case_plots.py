@@ -1,5 +1,5 @@
 """Figures of the validation report (tools/validation/report.py): one function per case, each
-reading a finished run directory (timeseries.csv, fluid.h5 / soil.h5, validate_series.csv) and
+reading a finished run directory (timeseries.csv, water.h5 / soil.h5, validate_series.csv) and
 writing PNG files; returns their paths."""
 import csv
 import json
@@ -24,6 +24,13 @@ def read_csv(path):
         rows = [r for r in csv.reader(line for line in f if not line.startswith("#"))]
     names, data = rows[0], np.array([[float(x) if x else math.nan for x in r] for r in rows[1:]])
     return {n: data[:, k] for k, n in enumerate(names)} if len(data) else {n: [] for n in names}
+
+
+def water_snapshot_path(out):
+    """The water's snapshots of run directory `out`: water.h5, or fluid.h5 in a run written
+    before the phase had one name (io/run_files.h)."""
+    current, former = os.path.join(out, "water.h5"), os.path.join(out, "fluid.h5")
+    return former if not os.path.exists(current) and os.path.exists(former) else current
 
 
 def last_snapshot(path):
@@ -81,7 +88,7 @@ def against_weight(figures, name, suffix, value, y, t, weight, top, labels):
 
 
 def hydrostatic_tank(out, figures, name):
-    snap, t = last_snapshot(os.path.join(out, "fluid.h5"))
+    snap, t = last_snapshot(water_snapshot_path(out))
     params = run_json(out)["parameters"]
     weight = params["water"]["rho0"] * abs(params["run"]["gravity"][1])
     top = params["water"]["blocks"][0]["max"][1]
@@ -168,7 +175,7 @@ def rockfill(out, figures, name):
     snap, t = last_snapshot(os.path.join(out, "soil.h5"))
     x = free_field(snap, "position")
     n = free_field(snap, "porosity")
-    water, _ = last_snapshot(os.path.join(out, "fluid.h5"))
+    water, _ = last_snapshot(water_snapshot_path(out))
     w = free_field(water, "position")
     fig, ax = plt.subplots(figsize=(9, 3.5))
     sc = ax.scatter(x[:, 0], x[:, 1], c=n, s=3, cmap="copper_r")

@@ -5,6 +5,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "io/run_files.h"
 #include "io/snapshot_reader.h"
 #include "tools/validation/run_directory.h"
 #include "tools/validation/terzaghi.h"
@@ -97,11 +98,11 @@ ConsolidationCheck check_consolidation(const std::string& run_dir) {
   const double n = material.at("porosity").get<double>();
   out.b_textbook = 1.0 / (1.0 + n / (out.m_v * out.bulk_water));
 
-  io::SnapshotReader soil_h5(run_dir + "/soil.h5"), water_h5(run_dir + "/fluid.h5");
+  io::SnapshotReader soil_h5(run_dir + "/soil.h5"), water_h5(io::water_snapshot_path(run_dir));
   const auto snapshots = soil_h5.snapshots();
   const auto water_snapshots = water_h5.snapshots();
   if (snapshots.size() < 3 || water_snapshots.size() != snapshots.size())
-    throw std::runtime_error(run_dir + ": too few outputs, or soil.h5 and fluid.h5 differ");
+    throw std::runtime_error(run_dir + ": too few outputs, or soil.h5 and water.h5 differ");
   // The column at t = 0: its base, top and the loaded top row (ids).
   const PhaseRows soil0 = read_rows(soil_h5, snapshots[0].index, up, "displacement");
   const PhaseRows water0 = read_rows(water_h5, water_snapshots[0].index, up, "pressure");

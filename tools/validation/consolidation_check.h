@@ -42,7 +42,7 @@ struct ConsolidationCheck {
   bool met = false;             ///< every target of issue 23
 };
 
-/// Reads run.json (material, water, load), soil.h5 (settlement of the loaded top row) and fluid.h5
+/// Reads run.json (material, water, load), soil.h5 (settlement of the loaded top row) and water.h5
 /// (pore pressure per row, minus its mean over the outputs of one undrained period before the
 /// load started). Throws std::runtime_error on
 /// a run that is not a consolidation run or lacks outputs.

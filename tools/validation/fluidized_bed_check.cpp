@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "io/run_files.h"
 #include "io/snapshot_reader.h"
 #include "tools/validation/run_directory.h"
 
@@ -24,7 +25,7 @@ double window_mean(const std::vector<double>& t, const std::vector<double>& valu
   return count ? sum / count : std::nan("");
 }
 
-/// FluidizedBedCheck::velocity_ratio and mass_flux_ratio from the snapshots of fluid.h5 at or
+/// FluidizedBedCheck::velocity_ratio and mass_flux_ratio from the snapshots of water.h5 at or
 /// after `window_start`.
 void water_in_bed(const std::string& run_dir, const nlohmann::json& run, FluidizedBedCheck& out,
                   double window_start) {
@@ -50,7 +51,7 @@ void water_in_bed(const std::string& run_dir, const nlohmann::json& run, Fluidiz
   double region = to - from;
   for (std::size_t k = 0; k < dim; ++k)
     if (dir[k] == 0.0) region *= zone_hi[k] - zone_lo[k];
-  io::SnapshotReader reader(run_dir + "/fluid.h5");
+  io::SnapshotReader reader(io::water_snapshot_path(run_dir));
   double velocity = 0, flux = 0, flux_density = 0, fill = 0;
   int snapshots = 0;
   for (const auto& snap : reader.snapshots()) {

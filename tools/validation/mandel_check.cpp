@@ -8,6 +8,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "io/run_files.h"
 #include "io/snapshot_reader.h"
 #include "tools/validation/mandel.h"
 #include "tools/validation/run_directory.h"
@@ -108,11 +109,11 @@ MandelCheck check_mandel(const std::string& run_dir) {
   const double k = material->at("hydraulic_conductivity").get<double>();
   const double n = material->at("porosity").get<double>();
 
-  io::SnapshotReader soil_h5(run_dir + "/soil.h5"), water_h5(run_dir + "/fluid.h5");
+  io::SnapshotReader soil_h5(run_dir + "/soil.h5"), water_h5(io::water_snapshot_path(run_dir));
   const auto snapshots = soil_h5.snapshots();
   const auto water_snapshots = water_h5.snapshots();
   if (snapshots.size() < 3 || water_snapshots.size() != snapshots.size())
-    throw std::runtime_error(run_dir + ": too few outputs, or soil.h5 and fluid.h5 differ");
+    throw std::runtime_error(run_dir + ": too few outputs, or soil.h5 and water.h5 differ");
   // The sample at t = 0: its extent and the plate (its top row).
   const auto position0 = soil_h5.read_f64(snapshots[0].index, "position");
   const auto fixed0 = soil_h5.read_u8(snapshots[0].index, "fixed");

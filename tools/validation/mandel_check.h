@@ -44,7 +44,7 @@ struct MandelCheck {
 };
 
 /// Reads run.json (the sample's material, the water, the first load: the plate), soil.h5 (the
-/// plate's displacement) and fluid.h5 (the pore pressure of the water inside the sample, below the
+/// plate's displacement) and water.h5 (the pore pressure of the water inside the sample, below the
 /// plate's row). Throws std::runtime_error on a run that is not a Mandel run or lacks outputs.
 MandelCheck check_mandel(const std::string& run_dir);
 

@@ -5,6 +5,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "io/run_files.h"
 #include "io/snapshot_reader.h"
 #include "tools/validation/rectangular_dam.h"
 #include "tools/validation/rectangular_dam_exact.h"
@@ -124,9 +125,9 @@ SeepageEmbankmentCheck check_seepage_embankment(const std::string& run_dir, doub
   for (double f : {0.25, 0.5, 0.75}) out.slab_x.push_back(f * L);
   const double slab_width = 0.1 * L;
 
-  io::SnapshotReader reader(run_dir + "/fluid.h5");
+  io::SnapshotReader reader(io::water_snapshot_path(run_dir));
   const auto snapshots = reader.snapshots();
-  if (snapshots.size() < 2) throw std::runtime_error(run_dir + "/fluid.h5: too few snapshots");
+  if (snapshots.size() < 2) throw std::runtime_error(run_dir + "/water.h5: too few snapshots");
   out.window_end = snapshots.back().time;
   out.window_start = out.window_end - (window > 0.0 ? window : 0.25 * out.window_end);
   const Box upstream{tank.x0 + margin, tank.y0, dam.x0 - margin, 1e9};

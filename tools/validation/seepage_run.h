@@ -55,7 +55,7 @@ inline SeepageScene seepage_scene(const nlohmann::json& parameters, const std::s
                      w.at("gamma").get<double>(), -gravity[1]}};
 }
 
-/// The water fields of one snapshot of fluid.h5 (2D, row-major).
+/// The water fields of one snapshot of water.h5 (2D, row-major).
 struct WaterSnapshot {
   io::FieldData<double> x, v, p, rho, m;
   io::FieldData<std::uint8_t> fixed;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "io/run_files.h"
 #include "io/snapshot_reader.h"
 #include "tools/validation/grid_series.h"
 #include "tools/validation/laplace_fv.h"
@@ -114,9 +115,9 @@ SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
       {mid, layer.y0 + 0.25 * depth},           {weir.x1, layer.y0 + 0.25 * depth},
       {weir.x1 + 0.1, layer.y0 + 0.25 * depth}, {mid, layer.y0 + 0.75 * depth}};
 
-  io::SnapshotReader reader(run_dir + "/fluid.h5");
+  io::SnapshotReader reader(io::water_snapshot_path(run_dir));
   const auto snapshots = reader.snapshots();
-  if (snapshots.size() < 2) throw std::runtime_error(run_dir + "/fluid.h5: too few snapshots");
+  if (snapshots.size() < 2) throw std::runtime_error(run_dir + "/water.h5: too few snapshots");
   out.window_end = snapshots.back().time;
   out.window_start = out.window_end - (window > 0.0 ? window : 0.25 * out.window_end);
   const Box upstream{layer.x0 + margin, layer.y1 + margin, weir.x0 - margin, 1e9};

@@ -5,6 +5,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "io/run_files.h"
 #include "io/snapshot_reader.h"
 #include "tools/validation/run_directory.h"
 #include "tools/validation/still_water.h"
@@ -13,7 +14,7 @@ namespace porosph::validation {
 
 namespace {
 
-/// The last snapshot of a run's fluid.h5: heights along -g of the free particles, their pressure
+/// The last snapshot of a run's water.h5: heights along -g of the free particles, their pressure
 /// and speed; the water's EOS; dp.
 struct StillSnapshot {
   double time = 0, dp = 0, top = -INFINITY;
@@ -35,9 +36,9 @@ StillSnapshot read_still_snapshot(const std::string& run_dir) {
   out.dp = parameters.at("run").at("dp").get<double>();
   const std::size_t dim = gravity.size();
 
-  io::SnapshotReader reader(run_dir + "/fluid.h5");
+  io::SnapshotReader reader(io::water_snapshot_path(run_dir));
   const auto snapshots = reader.snapshots();
-  if (snapshots.empty()) throw std::runtime_error(run_dir + "/fluid.h5 has no snapshot");
+  if (snapshots.empty()) throw std::runtime_error(run_dir + "/water.h5 has no snapshot");
   const auto last = snapshots.back();
   out.time = last.time;
   const auto position = reader.read_f64(last.index, "position");
@@ -58,7 +59,7 @@ StillSnapshot read_still_snapshot(const std::string& run_dir) {
                               position.values.begin() + (i + 1) * dim);
     out.top = std::max(out.top, s);
   }
-  if (out.height.empty()) throw std::runtime_error(run_dir + "/fluid.h5: no free water");
+  if (out.height.empty()) throw std::runtime_error(run_dir + "/water.h5: no free water");
   return out;
 }
 

@@ -8,7 +8,7 @@
 
 namespace porosph::validation {
 
-/// Still water in a tank, in the last snapshot of fluid.h5. Heights s along -g; the free surface
+/// Still water in a tank, in the last snapshot of water.h5. Heights s along -g; the free surface
 /// H = top particle centre + dp/2; depth d = H - s. The reference is still weakly compressible
 /// water p(d) (still_water.h); the incompressible rho0 g d is reported beside it.
 struct HydrostaticCheck {
@@ -37,7 +37,7 @@ struct HydrostaticCheck {
 HydrostaticCheck check_hydrostatic(const std::string& run_dir);
 
 /// Still water over and inside a porous bed (the first soil block of the scene, a box), in the last
-/// snapshot of fluid.h5: the water inside the box in the bottom quarter of its height along -g.
+/// snapshot of water.h5: the water inside the box in the bottom quarter of its height along -g.
 /// Head = s + Phi(p) / g, flat in still water (still_water.h).
 struct StillBedCheck {
   double time = 0;
