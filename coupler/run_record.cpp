@@ -365,7 +365,7 @@ std::vector<io::XdmfField> snapshot_fields_of_phase(const std::string& phase, in
                                                     bool pore_fields) {
   const std::size_t d = static_cast<std::size_t>(dimension);
   std::vector<io::XdmfField> fields = {{"velocity", d, "Float"}, {"density", 1, "Float"}};
-  if (phase == "water") {  // fluid_solver/fluid_solver_output.cpp
+  if (phase == "water") {  // fluid_solver/water_solver_output.cpp
     fields.push_back({"pressure", 1, "Float"});
     fields.push_back({"mass", 1, "Float"});
     if (pore_fields) {

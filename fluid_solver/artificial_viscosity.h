@@ -25,7 +25,7 @@
 
 #include "sph/vector.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 struct ArtificialViscosity {
   double alpha = 0.05, beta = 0.0, h = 0.0;
@@ -40,7 +40,7 @@ struct ArtificialViscosity {
 
   /// The drag share s_a = min(1, lambda_a / r) of a drag rate lambda_a >= 0 [1/s] against the rate
   /// r >= 0: 0 without drag; 1 wherever there is drag when r = 0 (alpha = 0: no kernel-scale
-  /// damping to compare with). Also used by the hydrostatic difference form (fluid_params.h).
+  /// damping to compare with). Also used by the hydrostatic difference form (water_params.h).
   static double drag_share(double drag_rate, double rate) {
     if (!(drag_rate > 0.0)) return 0.0;
     return rate > 0.0 ? std::min(1.0, drag_rate / rate) : 1.0;
@@ -70,4 +70,4 @@ struct ArtificialViscosity {
   }
 };
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

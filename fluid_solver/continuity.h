@@ -4,7 +4,7 @@
 
 #include "sph/vector.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 /// Contribution of neighbour b to the sum of eq. 2: V_b v_ab . grad_a W_ab with the volume
 /// V_b = m_b / rho_b (computed once per particle and step, not per pair). The caller multiplies
@@ -14,4 +14,4 @@ inline double continuity_term(double volume_b, const sph::Vec<D>& v_ab, const sp
   return volume_b * v_ab.dot(grad_w);
 }
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -8,7 +8,7 @@
 
 #include "scene/scene.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 class DampingStage {
  public:
@@ -40,4 +40,4 @@ class DampingStage {
   bool released_ = false;
 };
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -50,7 +50,7 @@
 #include "fluid_solver/equation_of_state.h"
 #include "sph/vector.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 template <int D>
 class DensityDiffusion {
@@ -125,4 +125,4 @@ class DensityDiffusion {
   bool seven_ = true;
 };
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

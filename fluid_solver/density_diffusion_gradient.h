@@ -23,16 +23,16 @@
 #include <vector>
 
 #include "fluid_solver/density_diffusion.h"
-#include "fluid_solver/fluid_particles.h"
+#include "fluid_solver/water_particles.h"
 #include "sph/neighbour_list.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 /// Fills `gradient` (size n_free; grown only when too small) with G_a of every water particle;
 /// P.diffusion_state must be filled (fill_diffusion_states).
 /// P.diffusion_state of every water particle from its density.
 template <int D>
-void fill_diffusion_states(const DensityDiffusion<D>& diffusion, FluidParticles<D>& P) {
+void fill_diffusion_states(const DensityDiffusion<D>& diffusion, WaterParticles<D>& P) {
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
   P.diffusion_state.resize(P.n_free);
 #pragma omp parallel for schedule(static)
@@ -41,7 +41,7 @@ void fill_diffusion_states(const DensityDiffusion<D>& diffusion, FluidParticles<
 
 template <int D, class Kernel>
 void departure_gradients(const sph::NeighbourList<D>& nl, const Kernel& kernel,
-                         const DensityDiffusion<D>& diffusion, const FluidParticles<D>& P,
+                         const DensityDiffusion<D>& diffusion, const WaterParticles<D>& P,
                          std::vector<sph::Vec<D>>& gradient) {
   using Vec = sph::Vec<D>;
   using Mat = Eigen::Matrix<double, D, D>;
@@ -66,4 +66,4 @@ void departure_gradients(const sph::NeighbourList<D>& nl, const Kernel& kernel,
   }
 }
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

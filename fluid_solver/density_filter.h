@@ -10,15 +10,15 @@
 #include <cstdint>
 #include <vector>
 
-#include "fluid_solver/fluid_particles.h"
+#include "fluid_solver/water_particles.h"
 #include "sph/neighbour_list.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 /// Filters the density of the water particles of P (walls up to date); `scratch` is reused.
 template <int D, class Kernel>
 void shepard_density_filter(const sph::NeighbourList<D>& neighbours, const Kernel& kernel,
-                            FluidParticles<D>& P, std::vector<double>& scratch) {
+                            WaterParticles<D>& P, std::vector<double>& scratch) {
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
   scratch.resize(P.n_free);
   const double w0 = kernel.w(0.0);
@@ -37,4 +37,4 @@ void shepard_density_filter(const sph::NeighbourList<D>& neighbours, const Kerne
   for (std::int64_t a = 0; a < n; ++a) P.density[a] = scratch[a];
 }
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -2,7 +2,7 @@
 // particle and rate evaluation so that the pair loops only read it.
 #pragma once
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 /// s = rho / rho0: s^(2 - gamma) (kappa over rho0 / c0^2) and s^(gamma - 1) ((gamma - 1) Phi / c0^2
 /// + 1).
@@ -11,4 +11,4 @@ struct DiffusionState {
   double s_gamma_1 = 1.0;
 };
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

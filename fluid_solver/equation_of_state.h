@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 class TaitEos {
  public:
@@ -62,4 +62,4 @@ class TaitEos {
   bool seven_ = true;
 };
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

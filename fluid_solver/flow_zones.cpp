@@ -7,7 +7,7 @@
 
 #include "sph/geometry.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 namespace {
 
 template <int D>
@@ -89,7 +89,7 @@ void FlowZones<D>::begin_step(double time, double dt) {
 }
 
 template <int D>
-std::size_t FlowZones<D>::renew(FluidParticles<D>& P, double volume, std::int64_t& next_id,
+std::size_t FlowZones<D>::renew(WaterParticles<D>& P, double volume, std::int64_t& next_id,
                                 double& born_mass) {
   born_.for_each_array([](auto& array) { array.clear(); });
   std::size_t zone_particles = 0;
@@ -120,4 +120,4 @@ std::size_t FlowZones<D>::renew(FluidParticles<D>& P, double volume, std::int64_
 template class FlowZones<2>;
 template class FlowZones<3>;
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -1,12 +1,12 @@
 // Water inflow and outflow zones (scene [[water.inflow]], [[water.outflow]]; docs/design.md section
 // 3, "Boundaries").
 //
-// Inflow zone: a box whose water particles ("zone particles", FluidParticles::zone = the zone's
+// Inflow zone: a box whose water particles ("zone particles", WaterParticles::zone = the zone's
 // index) follow the prescribed velocity u(t) = speed(t) e instead of their equation of motion
 // (e: the unit direction, along one axis). They stay in the free range, so they interact with
 // everything, and their density follows the continuity equation as usual: the zone pushes the
 // water downstream through the pressure. Their accelerations (internal and interaction) are not
-// used, nor counted in the eq. 21 limit (fluid_rates.cpp). Over a step [t, t + dt] a zone particle
+// used, nor counted in the eq. 21 limit (water_rates.cpp). Over a step [t, t + dt] a zone particle
 // does
 //   x += dt u(t + dt/2)                    (the exact integral of u for the linear ramp)
 //   v^{n-1} = u(t),  v^{n+1} = u(t + dt)   (the two Verlet levels a free particle needs)
@@ -26,11 +26,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "fluid_solver/fluid_particles.h"
+#include "fluid_solver/water_particles.h"
 #include "scene/scene.h"
 #include "sph/vector.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 template <int D>
 class FlowZones {
@@ -83,7 +83,7 @@ class FlowZones {
   /// replacement (fresh ids from next_id, which advances) into the free range. volume = dp^D.
   /// Returns the number of particles born and adds their mass to `born_mass`. Allocates only when
   /// P must grow beyond its capacity (it then reserves one zone-load ahead).
-  std::size_t renew(FluidParticles<D>& P, double volume, std::int64_t& next_id, double& born_mass);
+  std::size_t renew(WaterParticles<D>& P, double volume, std::int64_t& next_id, double& born_mass);
 
  private:
   struct Box {
@@ -114,10 +114,10 @@ class FlowZones {
   std::vector<double> outflow_start_;  ///< per outflow zone: start_time [s]
   double hold_until_ = 0.0;
   std::vector<StepVelocities> step_;
-  FluidParticles<D> born_;  ///< staging of the particles born in renew()
+  WaterParticles<D> born_;  ///< staging of the particles born in renew()
 };
 
 extern template class FlowZones<2>;
 extern template class FlowZones<3>;
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -36,7 +36,7 @@
 #include "fluid_solver/particle_gradient.h"
 #include "sph/vector.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 /// The sums of one water particle's pressure term over its neighbours, in both forms, water and
 /// wall neighbours apart (the walls' share is booked as an external impulse).
@@ -81,4 +81,4 @@ struct SoilPressureSums {
   }
 };
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -10,7 +10,7 @@
 
 #include "fluid_solver/water_bodies.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 namespace {
 
 /// Runs of one column break where consecutive centres are farther apart than this (spacings).
@@ -129,4 +129,4 @@ template void hydrostatic_state<2>(const sph::Vec<2>*, std::size_t, const sph::V
 template void hydrostatic_state<3>(const sph::Vec<3>*, std::size_t, const sph::Vec<3>*, std::size_t,
                                    const sph::Vec<3>&, double, const TaitEos&, double*, double*);
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

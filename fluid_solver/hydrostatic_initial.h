@@ -24,7 +24,7 @@
 #include "fluid_solver/equation_of_state.h"
 #include "sph/vector.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 /// Writes pressure[i] and density[i] for the n water particles at x; the n_walls wall particles
 /// at walls cover the water beneath them (see above). Zero gravity: p = 0, rho = rho0.
@@ -40,4 +40,4 @@ void hydrostatic_state(const sph::Vec<D>* x, std::size_t n, const sph::Vec<D>& g
   hydrostatic_state<D>(x, n, nullptr, 0, gravity, dp, eos, pressure, density);
 }
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

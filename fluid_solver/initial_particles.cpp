@@ -7,10 +7,10 @@
 #include "fluid_solver/taylor_green_initial.h"
 #include "sph/geometry.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 template <int D>
-InitialParticles<D> initial_particles(const scene::Scene& s, const FluidParams<D>& params,
+InitialParticles<D> initial_particles(const scene::Scene& s, const WaterParams<D>& params,
                                       const sph::DomainBox<D>& box, const FlowZones<D>& zones,
                                       const OpenReservoirs<D>& open) {
   using Vec = sph::Vec<D>;
@@ -69,7 +69,7 @@ InitialParticles<D> initial_particles(const scene::Scene& s, const FluidParams<D
         out.next_wall_removal = wall.remove_at;
     }
   }
-  FluidParticles<D>& P = out.particles;
+  WaterParticles<D>& P = out.particles;
   const std::size_t n = water.size() + walls.size();
   P.n_free = water.size();
   P.reserve(n + zone_particles);
@@ -115,11 +115,11 @@ InitialParticles<D> initial_particles(const scene::Scene& s, const FluidParams<D
   return out;
 }
 
-template InitialParticles<2> initial_particles<2>(const scene::Scene&, const FluidParams<2>&,
+template InitialParticles<2> initial_particles<2>(const scene::Scene&, const WaterParams<2>&,
                                                   const sph::DomainBox<2>&, const FlowZones<2>&,
                                                   const OpenReservoirs<2>&);
-template InitialParticles<3> initial_particles<3>(const scene::Scene&, const FluidParams<3>&,
+template InitialParticles<3> initial_particles<3>(const scene::Scene&, const WaterParams<3>&,
                                                   const sph::DomainBox<3>&, const FlowZones<3>&,
                                                   const OpenReservoirs<3>&);
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -3,16 +3,16 @@
 
 #include "fluid_solver/flow_zones.h"
 #include "fluid_solver/open_reservoirs.h"
-#include "fluid_solver/fluid_params.h"
-#include "fluid_solver/fluid_particles.h"
+#include "fluid_solver/water_params.h"
+#include "fluid_solver/water_particles.h"
 #include "scene/scene.h"
 #include "sph/domain_box.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 template <int D>
 struct InitialParticles {
-  FluidParticles<D> particles;
+  WaterParticles<D> particles;
   double next_wall_removal = -1.0;  ///< earliest wall removal time [s] (< 0: none)
 };
 
@@ -26,8 +26,8 @@ struct InitialParticles {
 /// Taylor-Green velocity and pressure on top (taylor_green_initial.h); masses m = rho(t=0) dp^D;
 /// ids 0..n-1. The arrays are reserved one zone-load ahead for the particles the zones will emit.
 template <int D>
-InitialParticles<D> initial_particles(const scene::Scene& s, const FluidParams<D>& params,
+InitialParticles<D> initial_particles(const scene::Scene& s, const WaterParams<D>& params,
                                       const sph::DomainBox<D>& box, const FlowZones<D>& zones,
                                       const OpenReservoirs<D>& open);
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -19,13 +19,13 @@
 #include <string>
 #include <vector>
 
-#include "fluid_solver/fluid_particles.h"
 #include "fluid_solver/pressure_force.h"
+#include "fluid_solver/water_particles.h"
 #include "scene/scene.h"
 #include "sph/neighbour_list.h"
 #include "sph/vector.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 template <int D>
 class MovingWalls {
@@ -57,10 +57,10 @@ class MovingWalls {
   const Vec& force(std::size_t k) const { return force_[k]; }
 
   /// F_W of every moving wall (above) from the pairs of `nl` and the pressures, densities, masses
-  /// and gradient scales of the latest rates; `pressure_sign` as in the rates (fluid_rates.cpp).
+  /// and gradient scales of the latest rates; `pressure_sign` as in the rates (water_rates.cpp).
   template <class Kernel>
   void measure_forces(const sph::NeighbourList<D>& nl, const Kernel& kernel,
-                      const FluidParticles<D>& P, double pressure_sign) {
+                      const WaterParticles<D>& P, double pressure_sign) {
     for (Vec& f : force_) f.setZero();
     if (scene_index_.empty()) return;
     for (std::size_t a = 0; a < P.n_free; ++a) {
@@ -77,7 +77,7 @@ class MovingWalls {
   }
 
   /// For each wall acting on water (walls_acting_on order): its index among the moving walls, -1
-  /// for a fixed wall (FluidParticles::wall_motion of its particles).
+  /// for a fixed wall (WaterParticles::wall_motion of its particles).
   static std::vector<std::int32_t> motion_of_water_walls(const scene::Scene& s) {
     std::vector<std::int32_t> motion;
     std::int32_t moving = 0;
@@ -101,7 +101,7 @@ class MovingWalls {
   }
 
   /// Gives each moving wall particle its wall's velocity and moves it by dt times that.
-  void move(FluidParticles<D>& P, double dt) const {
+  void move(WaterParticles<D>& P, double dt) const {
     if (scene_index_.empty()) return;
     for (std::size_t w = P.n_free; w < P.size(); ++w) {
       const std::int32_t k = P.wall_motion[w];
@@ -127,4 +127,4 @@ class MovingWalls {
   std::vector<Vec> force_;                ///< per moving wall: F_W of the latest rates
 };
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -7,7 +7,7 @@
 
 #include "sph/geometry.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 template <int D>
 OpenReservoirs<D>::OpenReservoirs(const scene::WaterPhase& water,
@@ -161,7 +161,7 @@ bool OpenReservoirs<D>::past_far_face(int zone, const Vec& x) const {
 }
 
 template <int D>
-void OpenReservoirs<D>::begin_step(const FluidParticles<D>& P, double time) {
+void OpenReservoirs<D>::begin_step(const WaterParticles<D>& P, double time) {
   held_ = time < hold_until_;
   if (zones_.empty() || held_) return;
   std::fill(cell_sum_.begin(), cell_sum_.end(), 0.0);
@@ -197,7 +197,7 @@ typename OpenReservoirs<D>::Vec OpenReservoirs<D>::velocity_at(int zone, const V
 }
 
 template <int D>
-void OpenReservoirs<D>::capture_and_impose(FluidParticles<D>& P) const {
+void OpenReservoirs<D>::capture_and_impose(WaterParticles<D>& P) const {
   if (zones_.empty()) return;
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
 #pragma omp parallel for schedule(static)
@@ -217,7 +217,7 @@ void OpenReservoirs<D>::capture_and_impose(FluidParticles<D>& P) const {
 }
 
 template <int D>
-std::size_t OpenReservoirs<D>::renew(FluidParticles<D>& P, double volume, std::int64_t& next_id,
+std::size_t OpenReservoirs<D>::renew(WaterParticles<D>& P, double volume, std::int64_t& next_id,
                                      double& born_mass) {
   if (zones_.empty()) return 0;
   // The buffer particles past the face become water; per cell, the buffer's hindmost particle.
@@ -286,4 +286,4 @@ std::size_t OpenReservoirs<D>::renew(FluidParticles<D>& P, double volume, std::i
 template class OpenReservoirs<2>;
 template class OpenReservoirs<3>;
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

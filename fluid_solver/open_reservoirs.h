@@ -45,11 +45,11 @@
 #include <vector>
 
 #include "fluid_solver/equation_of_state.h"
-#include "fluid_solver/fluid_particles.h"
+#include "fluid_solver/water_particles.h"
 #include "scene/scene.h"
 #include "sph/vector.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 /// What an open reservoir needs beyond the scene: the solver's gravity, smoothing length and EOS.
 template <int D>
@@ -87,7 +87,7 @@ class OpenReservoirs {
   bool past_far_face(int zone, const Vec& x) const;
 
   /// The cell velocities for the step from `time` (free water next to each face; no allocation).
-  void begin_step(const FluidParticles<D>& P, double time);
+  void begin_step(const WaterParticles<D>& P, double time);
   /// The velocity u n a buffer particle of zone `zone` at x has over the prepared step.
   Vec velocity_at(int zone, const Vec& x) const;
   /// Moves a buffer particle over the prepared step; returns 1 if it is now past the face.
@@ -98,12 +98,12 @@ class OpenReservoirs {
   }
   /// Turns the free particles inside a box below its level into buffer particles, and sets every
   /// buffer particle's density to the hydrostatic one of its height (above).
-  void capture_and_impose(FluidParticles<D>& P) const;
+  void capture_and_impose(WaterParticles<D>& P) const;
   /// Hands the buffer particles past their face to the water, and adds (into the free range, fresh
   /// ids from next_id) one buffer particle per cell where a whole spacing is free behind the
   /// cell's hindmost particle up to the far face (in an empty cell: dp/2 behind the face); adds
   /// their mass to born_mass, returns their number. Call every step.
-  std::size_t renew(FluidParticles<D>& P, double volume, std::int64_t& next_id, double& born_mass);
+  std::size_t renew(WaterParticles<D>& P, double volume, std::int64_t& next_id, double& born_mass);
 
  private:
   struct Zone {
@@ -144,10 +144,10 @@ class OpenReservoirs {
   std::vector<double> cell_speed_;     ///< per cell: u
   std::vector<double> cell_back_;      ///< per cell: the hindmost buffer particle's signed distance
   std::vector<std::vector<Vec>> cell_centres_;
-  FluidParticles<D> born_;  ///< staging of the particles renew() adds
+  WaterParticles<D> born_;  ///< staging of the particles renew() adds
 };
 
 extern template class OpenReservoirs<2>;
 extern template class OpenReservoirs<3>;
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -21,7 +21,7 @@
 
 #include "sph/neighbour_list.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 struct ParticleGradient {
   static constexpr double kFrom = 0.90;  ///< tr(L) / D at and below which s_a = 1
@@ -53,4 +53,4 @@ struct ParticleGradient {
   }
 };
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

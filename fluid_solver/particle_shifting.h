@@ -24,10 +24,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "fluid_solver/fluid_particles.h"
+#include "fluid_solver/water_particles.h"
 #include "sph/neighbour_list.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 /// grad C of every water particle and U_max, from the state before a step (derived per step,
 /// sized by compute()).
@@ -39,10 +39,10 @@ struct ParticleShiftingGradients {
   std::vector<Vec> concentration;
   double speed = 0.0;  ///< U_max: the largest water speed of the same state [m/s]
 
-  /// Needs P.volume of the current state (compute_fluid_rates fills it).
+  /// Needs P.volume of the current state (compute_water_rates fills it).
   template <class Kernel>
   void compute(const sph::NeighbourList<D>& nl, const Kernel& kernel, double dp, double max_speed,
-               const FluidParticles<D>& P) {
+               const WaterParticles<D>& P) {
     speed = max_speed;
     const std::int64_t n = static_cast<std::int64_t>(P.n_free);
     concentration.resize(P.n_free);
@@ -67,4 +67,4 @@ struct ParticleShiftingGradients {
   }
 };
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

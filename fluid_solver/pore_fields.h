@@ -1,4 +1,4 @@
-// The water's view of the soil it flows through, for fluid.h5 (docs/water-in-soil.md). The water
+// The water's view of the soil it flows through, for water.h5 (docs/water-in-soil.md). The water
 // continuum fills the whole volume, so inside soil its velocity is the Darcy (superficial)
 // velocity q; the pore (seepage) velocity is q / n with n the soil porosity around the particle,
 // which the coupler computes (n_a = 1 - sum_i V_i (1 - n_i) W_ia) and sends with the commands
@@ -14,7 +14,7 @@
 #include "io/snapshot_writer.h"
 #include "sph/vector.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 template <int D>
 class PoreFields {
@@ -66,4 +66,4 @@ class PoreFields {
   std::vector<Vec> pore_velocity_;
 };
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -25,7 +25,7 @@
 
 #include "sph/vector.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 /// Acceleration of a due to b from the pressure term of eq. 3: `p_a` as it enters the pair,
 /// +p_a for the symmetric form, -p_a for the difference form; the densities enter as their
@@ -36,4 +36,4 @@ inline sph::Vec<D> pressure_acceleration(double m_b, double p_a, double p_b, dou
   return (-m_b * (p_a + p_b) * (inv_rho_a * inv_rho_b)) * grad_w;
 }
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

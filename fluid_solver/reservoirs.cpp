@@ -8,7 +8,7 @@
 
 #include "sph/geometry.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 template <int D>
 Reservoirs<D>::Reservoirs(const scene::WaterPhase& water, const Vec& gravity, double dp, double h,
@@ -84,7 +84,7 @@ typename Reservoirs<D>::Vec Reservoirs<D>::column_point(const Zone& z, std::size
 }
 
 template <int D>
-void Reservoirs<D>::find_column_tops(const FluidParticles<D>& P, double time) {
+void Reservoirs<D>::find_column_tops(const WaterParticles<D>& P, double time) {
   std::fill(top_index_.begin(), top_index_.end(), -1);
   for (std::size_t a = 0; a < P.n_free; ++a) {
     if (P.zone[a] >= 0) continue;
@@ -103,7 +103,7 @@ void Reservoirs<D>::find_column_tops(const FluidParticles<D>& P, double time) {
 }
 
 template <int D>
-void Reservoirs<D>::keep_clear_candidates(const FluidParticles<D>& P) {
+void Reservoirs<D>::keep_clear_candidates(const WaterParticles<D>& P) {
   const double clearance2 = kClearance * kClearance * dp_ * dp_;
   const double support = kernel_.support(), volume = std::pow(dp_, D);
   clear_.assign(candidates_.size(), 1);
@@ -138,7 +138,7 @@ void Reservoirs<D>::keep_clear_candidates(const FluidParticles<D>& P) {
 }
 
 template <int D>
-std::size_t Reservoirs<D>::refill(FluidParticles<D>& P, double time, std::int64_t& next_id,
+std::size_t Reservoirs<D>::refill(WaterParticles<D>& P, double time, std::int64_t& next_id,
                                   double& born_mass) {
   if (zones_.empty() || P.size() == 0) return 0;
   if (std::none_of(zones_.begin(), zones_.end(),
@@ -190,7 +190,7 @@ std::size_t Reservoirs<D>::refill(FluidParticles<D>& P, double time, std::int64_
 }
 
 template <int D>
-std::vector<double> Reservoirs<D>::column_surfaces(int zone, const FluidParticles<D>& P) const {
+std::vector<double> Reservoirs<D>::column_surfaces(int zone, const WaterParticles<D>& P) const {
   const Zone& z = zones_[zone];
   std::vector<double> top(z.column_total, -std::numeric_limits<double>::infinity());
   for (std::size_t a = 0; a < P.n_free; ++a) {
@@ -206,4 +206,4 @@ std::vector<double> Reservoirs<D>::column_surfaces(int zone, const FluidParticle
 template class Reservoirs<2>;
 template class Reservoirs<3>;
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -4,7 +4,7 @@
 // Heights s = x . up, up = -g/|g| along one axis; the target is s_L, the level's height. Each step
 // (after the move and the removal of the water that left):
 //  - removal: a free water particle inside an active zone's box with s > s_L leaves the water
-//    (FluidSolver::leaves, booked as outflow like an outflow zone's);
+//    (WaterSolver::leaves, booked as outflow like an outflow zone's);
 //  - refill (refill()): the box is split into lattice columns across up (spacing dp, anchored at
 //    the box's min); in every column whose highest free particle inside the box lies below
 //    s_L - dp, one particle is added dp above that particle (in an empty column at the box's
@@ -25,12 +25,12 @@
 #include <vector>
 
 #include "fluid_solver/equation_of_state.h"
-#include "fluid_solver/fluid_particles.h"
+#include "fluid_solver/water_particles.h"
 #include "scene/scene.h"
 #include "sph/kernels.h"
 #include "sph/vector.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 template <int D>
 class Reservoirs {
@@ -65,11 +65,11 @@ class Reservoirs {
 
   /// Adds the particles described above to the free range of P (fresh ids from next_id, which
   /// advances); adds their mass to born_mass and returns how many were added.
-  std::size_t refill(FluidParticles<D>& P, double time, std::int64_t& next_id, double& born_mass);
+  std::size_t refill(WaterParticles<D>& P, double time, std::int64_t& next_id, double& born_mass);
 
   /// Surface of each column of zone z (highest free particle in the box + dp/2; NaN for an empty
   /// column), as a coordinate along the gravity axis. For tests and tools (allocates).
-  std::vector<double> column_surfaces(int z, const FluidParticles<D>& P) const;
+  std::vector<double> column_surfaces(int z, const WaterParticles<D>& P) const;
 
  private:
   struct Zone {
@@ -96,10 +96,10 @@ class Reservoirs {
   /// Centre of column c of zone z across up, at height s.
   Vec column_point(const Zone& z, std::size_t c, double s) const;
   /// Highest free particle of every column of the active zones (top_index_, top_height_).
-  void find_column_tops(const FluidParticles<D>& P, double time);
+  void find_column_tops(const WaterParticles<D>& P, double time);
   /// Drops the candidates closer than kClearance dp to a particle of P or an earlier accepted
   /// candidate, or where those fill more than kMaxFill of the volume (cubic spline of support 2h).
-  void keep_clear_candidates(const FluidParticles<D>& P);
+  void keep_clear_candidates(const WaterParticles<D>& P);
 
   std::vector<Zone> zones_;
   int axis_ = D - 1;   ///< the gravity axis
@@ -112,10 +112,10 @@ class Reservoirs {
   std::vector<double> top_height_;
   std::vector<Candidate> candidates_;
   std::vector<std::uint8_t> clear_;
-  FluidParticles<D> born_;  ///< staging of the added particles
+  WaterParticles<D> born_;  ///< staging of the added particles
 };
 
 extern template class Reservoirs<2>;
 extern template class Reservoirs<3>;
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -13,7 +13,7 @@
 
 #include "sph/vector.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 /// The Taylor-Green field of amplitude `speed` [m/s] and wavelength `wavelength` [m] at t = 0.
 struct TaylorGreenVortex {
@@ -38,4 +38,4 @@ struct TaylorGreenVortex {
   }
 };
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

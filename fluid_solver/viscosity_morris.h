@@ -8,7 +8,7 @@
 
 #include "sph/vector.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 /// x_ab . grad_a W_ab / (r_ab^2 + eta^2) from x_ab . grad_a W_ab and 1 / (r_ab^2 + eta^2): the
 /// regularised (1/r) dW/dr shared by the Morris term and the density diffusion (one division per
@@ -26,4 +26,4 @@ inline sph::Vec<D> morris_viscous_acceleration(double m_b, double mu_a, double m
   return (m_b * (mu_a + mu_b) * (inv_rho_a * inv_rho_b) * factor) * v_ab;
 }
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

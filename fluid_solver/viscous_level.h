@@ -29,10 +29,10 @@
 // = 40 cycle keeps it stable (spectral radius 0.18), but euler_every = 100 does not.
 #pragma once
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 /// The velocity level the viscous terms act on: v^n (Current; Euler steps) or the stored v^{n-1}
 /// (Previous; Verlet steps).
 enum class ViscousLevel { Current, Previous };
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

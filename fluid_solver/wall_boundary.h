@@ -13,19 +13,19 @@
 
 #include <cstdint>
 
-#include "fluid_solver/fluid_params.h"
-#include "fluid_solver/fluid_particles.h"
 #include "fluid_solver/viscous_level.h"
+#include "fluid_solver/water_params.h"
+#include "fluid_solver/water_particles.h"
 #include "sph/neighbour_list.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 /// Updates pressure, density, mass, sound speed and wall_velocity of the wall particles of P;
 /// wall_velocity from the water velocities at `level`, those the viscous terms act on
 /// (viscous_level.h).
 template <int D, class Kernel>
 void update_wall_state(const sph::NeighbourList<D>& neighbours, const Kernel& kernel,
-                       const FluidParams<D>& params, FluidParticles<D>& P,
+                       const WaterParams<D>& params, WaterParticles<D>& P,
                        ViscousLevel level = ViscousLevel::Current) {
   using Vec = sph::Vec<D>;
   const std::int64_t n0 = static_cast<std::int64_t>(P.n_free);
@@ -60,4 +60,4 @@ void update_wall_state(const sph::NeighbourList<D>& neighbours, const Kernel& ke
   }
 }
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

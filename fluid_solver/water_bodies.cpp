@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numeric>
 
-namespace porosph::fluid {
+namespace porosph::water {
 namespace {
 
 /// Union-find root of i, with path halving.
@@ -63,4 +63,4 @@ template std::vector<std::int32_t> water_bodies<2>(const sph::Vec<2>*, std::size
 template std::vector<std::int32_t> water_bodies<3>(const sph::Vec<3>*, std::size_t, double,
                                                    std::size_t*);
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -16,7 +16,7 @@
 
 #include "sph/vector.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 /// Largest distance between two linked water particles, in particle spacings.
 inline constexpr double kBodyLinkSpacings = 1.5;
@@ -70,4 +70,4 @@ void PointGrid<D>::for_each_near(const sph::Vec<D>& x, Fn&& fn) const {
   }
 }
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -1,7 +1,7 @@
 // The water solver's external-impulse book (docs/coupling.md, "The external-impulse ledger"): by
 // how much each source changed the momentum P = sum_a m_a v_a of the free water (inflow-zone
 // particles included) over one step, exactly as the integrator applies it. With a_own = g + a_wall
-// + a_pair the particle's own acceleration (fluid_rates.h; a_wall its wall neighbours' share,
+// + a_pair the particle's own acceleration (water_rates.h; a_wall its wall neighbours' share,
 // a_pair the water pairs') and a_int the coupler's interaction, the modified Verlet step of a free
 // particle (sph/integrator.h, verlet_step_coupled; q^n the stored previous velocity) is
 //   v^{n+1} - v^n = [q^n - v^n + dt_previous a_own] + dt (g + a_wall + a_pair) + dt a_int
@@ -37,11 +37,11 @@
 #include <vector>
 
 #include "fluid_solver/flow_zones.h"
-#include "fluid_solver/fluid_particles.h"
 #include "fluid_solver/open_reservoirs.h"
+#include "fluid_solver/water_particles.h"
 #include "sph/impulse_book.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 /// The water's sources, in the order of water_impulse_sources().
 enum WaterImpulse : std::size_t {
@@ -66,7 +66,7 @@ using WaterImpulseBook = sph::ImpulseBook<D, kWaterImpulseCount>;
 
 /// sum m v over the particles [begin, end) of P.
 template <int D>
-sph::Vec<D> momentum_of(const FluidParticles<D>& P, std::size_t begin, std::size_t end) {
+sph::Vec<D> momentum_of(const WaterParticles<D>& P, std::size_t begin, std::size_t end) {
   sph::Vec<D> p = sph::Vec<D>::Zero();
   for (std::size_t a = begin; a < end; ++a) p += P.mass[a] * P.velocity[a];
   return p;
@@ -77,7 +77,7 @@ sph::Vec<D> momentum_of(const FluidParticles<D>& P, std::size_t begin, std::size
 /// it, after zones.begin_step(time, dt) and open.begin_step(P, time). `euler`: an Euler step of the
 /// modified Verlet scheme.
 template <int D>
-void book_water_integration(const FluidParticles<D>& P, const sph::Vec<D>& g, double dt,
+void book_water_integration(const WaterParticles<D>& P, const sph::Vec<D>& g, double dt,
                             double dt_previous, bool euler, const FlowZones<D>& zones,
                             const OpenReservoirs<D>& open, WaterImpulseBook<D>& book) {
   using Vec = sph::Vec<D>;
@@ -115,4 +115,4 @@ void book_water_integration(const FluidParticles<D>& P, const sph::Vec<D>& g, do
   }
 }
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

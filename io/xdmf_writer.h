@@ -23,7 +23,7 @@ struct XdmfSnapshot {
 /// One phase's series: its HDF5 file name relative to the XDMF file, its fields, and snapshots.
 struct XdmfPhaseSeries {
   std::string phase;
-  std::string h5_file;  ///< e.g. "fluid.h5"
+  std::string h5_file;  ///< e.g. "water.h5"
   int dimension = 2;
   std::vector<XdmfField> fields;  ///< besides "position", which becomes the Geometry
   std::vector<XdmfSnapshot> snapshots;

@@ -5,9 +5,9 @@
 // The keys a physics term owns are declared with the term (scene/term_registry.h, terms_*.cpp) and
 // added by add_term_keys(). The rest is split by theme: scene_schema.cpp ([scene], [run], [domain],
 // [water]), scene_schema_soil.cpp ([soil] and its materials and blocks), scene_schema_shared.cpp
-// ([[walls]], [[observables]]); scene_schema_builder.h holds the fluent builder they share. Adding a phase
-// means adding its TableSpecs and KeySpecs plus its conversion to the typed Scene (scene_build.cpp,
-// scene_soil.cpp).
+// ([[walls]], [[observables]]); scene_schema_builder.h holds the fluent builder they share. Adding
+// a phase means adding its TableSpecs and KeySpecs plus its conversion to the typed Scene
+// (scene_build.cpp, scene_soil.cpp).
 #pragma once
 
 #include <optional>

@@ -91,7 +91,7 @@ void add_water_terms(std::vector<TermSpec>& t) {
   t.push_back(term(
       "artificial_viscosity_at_walls",
       "The artificial viscosity also between water and no-slip wall particles, "
-      "with the mirrored wall velocity; fluid_solver/fluid_rates.cpp.",
+      "with the mirrored wall velocity; fluid_solver/water_rates.cpp.",
       "artificial_viscosity, walls acting on water, water.wall_condition = "
       "\"no_slip\" and water.artificial_viscosity_at_walls = true",
       [](const Scene& s) {

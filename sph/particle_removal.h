@@ -1,7 +1,7 @@
 // Removing particles from a phase's structure of arrays, shared by the water and soil solvers:
 // free particles that leave (the domain, an outflow zone) and fixed particles whose wall is taken
 // away at a given time (a gate). Works on any container with n_free, size(), mass, remove_at and
-// compact(keep) (fluid_solver/fluid_particles.h, soil_solver/soil_particles.h). `keep` is the
+// compact(keep) (fluid_solver/water_particles.h, soil_solver/soil_particles.h). `keep` is the
 // caller's scratch buffer (no allocation once it has grown).
 #pragma once
 

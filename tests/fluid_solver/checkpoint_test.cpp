@@ -1,30 +1,30 @@
-// FluidSolver::write_checkpoint / restore_checkpoint: the dam break (walls, Verlet with Euler
+// WaterSolver::write_checkpoint / restore_checkpoint: the dam break (walls, Verlet with Euler
 // steps, density diffusion) and an inflow channel (zone particles born, ids, mass counters)
 // continue bit for bit after a restore.
 #include <gtest/gtest.h>
 
-#include "fluid_solver/fluid_solver.h"
+#include "fluid_solver/water_solver.h"
 #include "scene/scene_loader.h"
 #include "tests/support/solver_checkpoint_check.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 namespace {
 
-TEST(FluidCheckpoint, DamBreakContinuesBitForBit) {
+TEST(WaterCheckpoint, DamBreakContinuesBitForBit) {
   const auto scene = scene::load_scene_file(
       std::string(POROSPH_SOURCE_DIR) + "/cases/dam_break/scene.toml", {"run.dp=0.004"});
-  FluidSolver<2> first(scene), second(scene);
+  WaterSolver<2> first(scene), second(scene);
   // 45 steps: past an Euler step (every 40) and a re-sort by cell (every 20) on both sides.
   porosph::testing::expect_checkpoint_continues_exactly(first, second, 45, 45, scene.run.dt0);
 }
 
-TEST(FluidCheckpoint, InflowZoneBirthsContinueBitForBit) {
+TEST(WaterCheckpoint, InflowZoneBirthsContinueBitForBit) {
   auto overrides = std::vector<std::string>{
       "run.dp=0.002", "soil.damping_duration=0.0", "water.inflow.0.start_time=0.0",
       "water.inflow.0.ramp_time=0.0", "water.inflow.0.flow_rate=0.05"};
   const auto scene = scene::load_scene_file(
       std::string(POROSPH_SOURCE_DIR) + "/cases/fluidized_bed/scene.toml", overrides);
-  FluidSolver<2> first(scene), second(scene);
+  WaterSolver<2> first(scene), second(scene);
   coupling::StepState state;
   for (int i = 0; i < 400 && first.born_count() == 0; ++i) {
     porosph::testing::step_alone(first, state, scene.run.dt0);
@@ -37,4 +37,4 @@ TEST(FluidCheckpoint, InflowZoneBirthsContinueBitForBit) {
 }
 
 }  // namespace
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <map>
 
-#include "fluid_fixtures.h"
-#include "fluid_solver/fluid_solver.h"
+#include "fluid_solver/water_solver.h"
+#include "water_fixtures.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 namespace {
 
 using Vec2 = sph::Vec<2>;
@@ -23,9 +23,9 @@ struct State {
   double rho;
 };
 
-std::map<std::int64_t, State> water_state(const FluidSolver<2>& f) {
+std::map<std::int64_t, State> water_state(const WaterSolver<2>& f) {
   std::map<std::int64_t, State> out;
-  const FluidParticles<2>& P = f.particles();
+  const WaterParticles<2>& P = f.particles();
   for (std::size_t a = 0; a < P.n_free; ++a)
     out[P.id[a]] = State{P.position[a], P.velocity[a], P.density[a]};
   return out;
@@ -47,7 +47,7 @@ TEST(DampingStage, WaterIsFrozenUntilItsEndThenStartsFromRestWithAnEulerStep) {
   scene::Scene s = tank_with_inflow();
   s.soil = scene::SoilPhase{};
   s.soil->damping_duration = duration;
-  FluidSolver<2> f(s);
+  WaterSolver<2> f(s);
   ASSERT_EQ(f.free_count(), 100u + 15u);  // 20 x 5 layer + 5 x 3 zone
   EXPECT_EQ(f.damping_stage().duration(), duration);
   const auto initial = water_state(f);
@@ -82,7 +82,7 @@ TEST(DampingStage, WaterIsFrozenUntilItsEndThenStartsFromRestWithAnEulerStep) {
   for (std::size_t a = 0; a < f.free_count(); ++a)
     acceleration[f.particles().id[a]] = f.particles().acceleration[a];
   f.advance(dt);
-  const FluidParticles<2>& P = f.particles();
+  const WaterParticles<2>& P = f.particles();
   int zone = 0;
   for (std::size_t a = 0; a < P.n_free; ++a) {
     const State& s0 = initial.at(P.id[a]);
@@ -105,7 +105,7 @@ TEST(DampingStage, WithoutSoilTheSameWaterMovesAtOnce) {
   for (int with_soil = 0; with_soil < 2; ++with_soil) {
     scene::Scene s = tank_with_inflow();
     if (with_soil) s.soil = scene::SoilPhase{};  // damping_duration 0: no stage
-    FluidSolver<2> f(s);
+    WaterSolver<2> f(s);
     const auto initial = water_state(f);
     f.compute_rates();
     f.advance(1e-4);
@@ -116,4 +116,4 @@ TEST(DampingStage, WithoutSoilTheSameWaterMovesAtOnce) {
 }
 
 }  // namespace
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -10,20 +10,20 @@
 #include <cmath>
 #include <vector>
 
-#include "fluid_fixtures.h"
 #include "fluid_solver/equation_of_state.h"
-#include "fluid_solver/fluid_rates.h"
+#include "fluid_solver/water_rates.h"
 #include "sph/geometry.h"
 #include "sph/kernels.h"
 #include "sph/neighbour_list.h"
+#include "water_fixtures.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 namespace {
 
 using Vec2 = sph::Vec<2>;
 
 /// D_a / (delta h c0) of every water particle, with the gradients G (zero: hydrostatic only).
-std::vector<double> rates(const FluidParticles<2>& P, const sph::NeighbourList<2>& nl,
+std::vector<double> rates(const WaterParticles<2>& P, const sph::NeighbourList<2>& nl,
                           const sph::CubicSpline<2>& kernel, const DensityDiffusion<2>& dd,
                           double eta2, const std::vector<Vec2>& gradient) {
   std::vector<double> out(P.n_free, 0.0);
@@ -95,4 +95,4 @@ TEST(DensityDiffusionGradient, IsolatedParticleFallsBackToTheHydrostaticBracket)
 }
 
 }  // namespace
-}  // namespace porosph::fluid
+}  // namespace porosph::water

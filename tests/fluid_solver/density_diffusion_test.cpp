@@ -12,14 +12,14 @@
 #include <random>
 #include <vector>
 
-#include "fluid_fixtures.h"
 #include "fluid_solver/equation_of_state.h"
-#include "fluid_solver/fluid_rates.h"
+#include "fluid_solver/water_rates.h"
 #include "sph/geometry.h"
 #include "sph/kernels.h"
 #include "sph/neighbour_list.h"
+#include "water_fixtures.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 namespace {
 
 using Vec2 = sph::Vec<2>;
@@ -100,7 +100,7 @@ TEST(DensityDiffusion, HydrostaticDepartureVanishesInStillWaterAtEveryDepth) {
 
 /// D_a of every particle of P (all water) from DensityDiffusion, corrected or not.
 template <int D>
-std::vector<double> diffusion_rates(const FluidParticles<D>& P, const sph::NeighbourList<D>& nl,
+std::vector<double> diffusion_rates(const WaterParticles<D>& P, const sph::NeighbourList<D>& nl,
                                     const sph::CubicSpline<D>& kernel,
                                     const DensityDiffusion<D>& dd, double eta2, bool corrected) {
   std::vector<double> rate(P.n_free, 0.0);
@@ -166,7 +166,7 @@ TEST(DensityDiffusion, StillWaterColumnHasNoFluxWithTheCorrection) {
 }
 
 /// Particles on the lattice of `box` (periodic where asked), rho0 1000, m = rho dp^2.
-FluidParticles<2> lattice(const sph::DomainBox<2>& box, double dp) {
+WaterParticles<2> lattice(const sph::DomainBox<2>& box, double dp) {
   const auto x =
       sph::fill_shape<2>(testing::box({box.min[0], box.min[1]}, {box.max[0], box.max[1]}), dp);
   return testing::make_particles<2>(x, x.size(), 1000.0, 1000.0 * dp * dp);
@@ -273,9 +273,9 @@ TEST(DensityDiffusion, ConservesVolumeWeightedDensityWithAndWithoutGravity) {
 }
 
 TEST(DensityDiffusion, InThePairLoopBetweenWaterParticlesOnly) {
-  // compute_fluid_rates on the two-particle bump at rest (continuity term 0): drho_a/dt is the
+  // compute_water_rates on the two-particle bump at rest (continuity term 0): drho_a/dt is the
   // hand value -2921.4191 with delta 0.1, exactly 0 with delta 0, and 0 when b is a wall particle.
-  FluidParams<2> params;
+  WaterParams<2> params;
   params.h = 0.01;
   params.eta2 = 1e-6;
   params.eos = TaitEos(1000.0, 20.0, 7.0);
@@ -287,7 +287,7 @@ TEST(DensityDiffusion, InThePairLoopBetweenWaterParticlesOnly) {
     P.density[0] = 1010.0;
     sph::NeighbourList<2> list;
     list.build(P.position.data(), 2, n_free, 2.0 * params.h, sph::DomainBox<2>{});
-    compute_fluid_rates(list, sph::CubicSpline<2>(params.h), params, P);
+    compute_water_rates(list, sph::CubicSpline<2>(params.h), params, P);
     return P.density_rate[0];
   };
   EXPECT_NEAR(rate_of_a(2), -2921.419090891251, 1e-8);
@@ -297,4 +297,4 @@ TEST(DensityDiffusion, InThePairLoopBetweenWaterParticlesOnly) {
 }
 
 }  // namespace
-}  // namespace porosph::fluid
+}  // namespace porosph::water

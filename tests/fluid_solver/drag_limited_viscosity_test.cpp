@@ -9,14 +9,14 @@
 #include <random>
 #include <stdexcept>
 
-#include "fluid_fixtures.h"
 #include "fluid_solver/artificial_viscosity.h"
-#include "fluid_solver/fluid_rates.h"
-#include "fluid_solver/fluid_solver.h"
+#include "fluid_solver/water_rates.h"
+#include "fluid_solver/water_solver.h"
 #include "sph/kernels.h"
 #include "sph/neighbour_list.h"
+#include "water_fixtures.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 namespace {
 
 using Vec2 = sph::Vec<2>;
@@ -48,8 +48,8 @@ TEST(DragLimitedViscosity, KernelDampingRateAndTheShareTheDragReplaces) {
 /// A random cloud of 300 water particles with random velocities, densities, sound speeds and
 /// masses, and the list of its pairs at h = 6 mm.
 struct Cloud {
-  FluidParticles<2> P;
-  FluidParams<2> params;
+  WaterParticles<2> P;
+  WaterParams<2> params;
   sph::NeighbourList<2> list;
   explicit Cloud(unsigned seed) {
     std::mt19937 rng(seed);
@@ -70,7 +70,7 @@ struct Cloud {
   void rates(double alpha) {
     // The drag limit on (a positive r_av): the loop applies the shares set in viscosity_cut.
     params.artificial = ArtificialViscosity{alpha, 0.0, params.h, 1.0};
-    compute_fluid_rates(list, sph::CubicSpline<2>(params.h), params, P);
+    compute_water_rates(list, sph::CubicSpline<2>(params.h), params, P);
   }
 };
 
@@ -117,7 +117,7 @@ TEST(DragLimitedViscosity, SolverTakesTheCouplersDragRates) {
     s.water->artificial_viscosity_in_soil = mode;
     s.water->blocks.push_back(testing::box({0.0, 0.0}, {0.01, 0.01}));
     s.water->blocks.push_back(testing::box({0.5, 0.0}, {0.51, 0.01}));
-    FluidSolver<2> f(s);
+    WaterSolver<2> f(s);
     const double r_av = ArtificialViscosity::kernel_damping_rate(
         s.water->alpha, s.water->sound_speed, f.params().h, 2);
     const bool limited = std::string(mode) == "drag_limited";
@@ -142,8 +142,8 @@ TEST(DragLimitedViscosity, SceneRejectsAnUnknownMode) {
   scene::Scene s = testing::water_scene(0.01, {-1, -1}, {1, 1});
   s.water->artificial_viscosity_in_soil = "sometimes";
   s.water->blocks.push_back(testing::box({0.0, 0.0}, {0.01, 0.01}));
-  EXPECT_THROW(FluidSolver<2>{s}, std::invalid_argument);
+  EXPECT_THROW(WaterSolver<2>{s}, std::invalid_argument);
 }
 
 }  // namespace
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -9,10 +9,10 @@
 #include <map>
 #include <set>
 
-#include "fluid_fixtures.h"
-#include "fluid_solver/fluid_solver.h"
+#include "fluid_solver/water_solver.h"
+#include "water_fixtures.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 namespace {
 
 using Vec2 = sph::Vec<2>;
@@ -81,7 +81,7 @@ void check_ramp_and_renewal() {
   std::vector<double> e(D, 0.0);
   e[0] = 1.0;
   s.water->inflows.push_back(inflow(std::vector<double>(D, 0.0), zone_hi, e, speed, start, ramp));
-  FluidSolver<D> f(s);
+  WaterSolver<D> f(s);
   const std::size_t columns = D == 2 ? 2 : 4, zone_size = 40 * columns;
   ASSERT_EQ(f.free_count(), zone_size);
   const std::int64_t first_new_id = static_cast<std::int64_t>(zone_size);
@@ -102,7 +102,7 @@ void check_ramp_and_renewal() {
       f.advance(dt);
       // Particles born in this step: m = rho dp^D at the density they were born with (which no
       // integration has changed yet), round-off only.
-      const FluidParticles<D>& P = f.particles();
+      const WaterParticles<D>& P = f.particles();
       for (std::size_t a = 0; a < P.n_free; ++a) {
         if (P.id[a] < born_before) continue;
         EXPECT_NEAR(P.mass[a], P.density[a] * std::pow(dp, D), 1e-15 * P.mass[a]);
@@ -111,7 +111,7 @@ void check_ramp_and_renewal() {
     }
     const double t = f.time();
     const double u = s.water->inflows[0].speed_at(t);
-    const FluidParticles<D>& P = f.particles();
+    const WaterParticles<D>& P = f.particles();
     std::size_t in_zone = 0;
     std::set<std::int64_t> ids;
     for (std::size_t a = 0; a < P.n_free; ++a) {
@@ -159,7 +159,7 @@ TEST(OutflowZone, RemovesExactlyTheParticlesThatEnterIt) {
     s.water->blocks.push_back(box({x, y}, {x + 0.01, y + 0.01}));
   }
   s.water->outflows.push_back(outflow({0.05, -1.0}, {0.75, 0.0}));
-  FluidSolver<2> f(s);
+  WaterSolver<2> f(s);
   ASSERT_EQ(f.free_count(), 8u);
   std::map<std::int64_t, Vec2> x0;
   for (std::size_t a = 0; a < 8; ++a) x0[f.particles().id[a]] = f.particles().position[a];
@@ -190,4 +190,4 @@ TEST(OutflowZone, RemovesExactlyTheParticlesThatEnterIt) {
 }
 
 }  // namespace
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -6,13 +6,13 @@
 #include <cmath>
 #include <set>
 
-#include "fluid_fixtures.h"
-#include "fluid_solver/fluid_solver.h"
 #include "fluid_solver/hydrostatic_initial.h"
 #include "fluid_solver/water_bodies.h"
+#include "fluid_solver/water_solver.h"
 #include "sph/geometry.h"
+#include "water_fixtures.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 namespace {
 
 using testing::box;
@@ -118,14 +118,14 @@ TEST(HydrostaticBodies, WaterUnderAWallTipTakesItsBodysSurface3D) {
 }
 
 TEST(HydrostaticBodies, SolverStartsEachBodyFromItsOwnSurface) {
-  // Through FluidSolver (initial_particles passes the walls): a pool 0.3 m deep joined under a
+  // Through WaterSolver (initial_particles passes the walls): a pool 0.3 m deep joined under a
   // sheet-pile wall (tip 0.1 m above the floor) to a pool on the right, and a separate pool
   // 0.15 m deep behind a wall to the floor. Bottom-row pressures within 1 % of rho g (own depth).
   scene::Scene s = testing::water_scene(kDp, {-0.05, -0.05}, {1.0, 0.6});
   s.water->blocks = {box({0, 0}, {0.6, 0.3}), box({0.63, 0}, {0.9, 0.15})};
   s.walls = {box({0.3, 0.1}, {0.33, 0.5}), box({0.6, 0.0}, {0.63, 0.5}),
              testing::container({0, 0}, {0.9, 0.5}, 3)};
-  FluidSolver<2> f(s);
+  WaterSolver<2> f(s);
   const auto& P = f.particles();
   int bottom = 0;
   for (std::size_t a = 0; a < P.n_free; ++a) {
@@ -139,4 +139,4 @@ TEST(HydrostaticBodies, SolverStartsEachBodyFromItsOwnSurface) {
 }
 
 }  // namespace
-}  // namespace porosph::fluid
+}  // namespace porosph::water

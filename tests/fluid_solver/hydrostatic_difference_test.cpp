@@ -10,14 +10,14 @@
 #include <random>
 #include <stdexcept>
 
-#include "fluid_fixtures.h"
-#include "fluid_solver/fluid_rates.h"
-#include "fluid_solver/fluid_solver.h"
+#include "fluid_solver/water_rates.h"
+#include "fluid_solver/water_solver.h"
 #include "sph/kernels.h"
 #include "sph/lattice_gradient.h"
 #include "sph/neighbour_list.h"
+#include "water_fixtures.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 namespace {
 
 using Vec2 = sph::Vec<2>;
@@ -27,8 +27,8 @@ constexpr double kDp = 0.01, kRho0 = 1000.0, kG = 9.81, kDepth = 0.3;
 /// strained; tr(L) / D stays above 0.97, a full support), p = rho0 g (depth - y) exactly, rho =
 /// rho0, every particle at drag share 1.
 struct StillWaterInSoil {
-  FluidParticles<2> P;
-  FluidParams<2> params;
+  WaterParticles<2> P;
+  WaterParams<2> params;
   sph::NeighbourList<2> list;
   StillWaterInSoil() {
     std::mt19937 rng(7);
@@ -52,7 +52,7 @@ struct StillWaterInSoil {
     params.hydrostatic_difference_in_soil = hydrostatic_difference;
     // The solver's kernel: the gradient normalised on the square lattice (sph/lattice_gradient.h).
     const sph::CubicSpline<2> plain(params.h);
-    compute_fluid_rates(list,
+    compute_water_rates(list,
                         sph::CubicSpline<2>(params.h, 1.0 / sph::lattice_gradient_sum(plain, kDp)),
                         params, P);
   }
@@ -136,9 +136,9 @@ TEST(HydrostaticDifference, TheDepartureFromAntisymmetricPairsIsWhatIsBooked) {
 TEST(HydrostaticDifference, SceneKeyAndDragShare) {
   scene::Scene s = testing::water_scene(0.01, {-1, -1}, {1, 1});
   s.water->blocks.push_back(testing::box({0.0, 0.0}, {0.01, 0.01}));
-  EXPECT_FALSE(FluidSolver<2>(s).params().hydrostatic_difference_in_soil);  // default symmetric
+  EXPECT_FALSE(WaterSolver<2>(s).params().hydrostatic_difference_in_soil);  // default symmetric
   s.water->pressure_gradient_in_soil = "hydrostatic_difference";
-  const FluidSolver<2> f(s);
+  const WaterSolver<2> f(s);
   EXPECT_TRUE(f.params().hydrostatic_difference_in_soil);
   const double r_av = f.params().drag_share_rate;
   EXPECT_GT(r_av, 0.0);
@@ -150,10 +150,10 @@ TEST(HydrostaticDifference, SceneKeyAndDragShare) {
       std::find(terms.begin(), terms.end(), "pressure_gradient_hydrostatic_difference_in_soil"),
       terms.end());
   s.water->alpha = 0.0;  // no artificial viscosity: the share is 1 wherever there is drag
-  EXPECT_EQ(FluidSolver<2>(s).params().drag_share(1e-3), 1.0);
+  EXPECT_EQ(WaterSolver<2>(s).params().drag_share(1e-3), 1.0);
   s.water->pressure_gradient_in_soil = "sometimes";
-  EXPECT_THROW(FluidSolver<2>{s}, std::invalid_argument);
+  EXPECT_THROW(WaterSolver<2>{s}, std::invalid_argument);
 }
 
 }  // namespace
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -4,19 +4,19 @@
 #include <cmath>
 #include <random>
 
-#include "fluid_fixtures.h"
 #include "fluid_solver/density_filter.h"
 #include "fluid_solver/hydrostatic_initial.h"
 #include "fluid_solver/wall_boundary.h"
 #include "sph/geometry.h"
 #include "sph/kernels.h"
+#include "water_fixtures.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 namespace {
 
 using Vec2 = sph::Vec<2>;
 
-TEST(FluidHydrostatic, DensityIsInverseEosOfRhoGDepth) {
+TEST(WaterHydrostatic, DensityIsInverseEosOfRhoGDepth) {
   // Block 0.1 m wide, 0.2 m deep at dp = 0.01: p = p(0.2 - y) of still weakly compressible water
   // (the free surface half a spacing above the top centres), rho = inverse EOS(p), to round-off;
   // p(d) = B ((1 + (6/7) rho0 g d / B)^(7/6) - 1) = rho0 g d (1 + g d / (2 c0^2) + ...).
@@ -35,7 +35,7 @@ TEST(FluidHydrostatic, DensityIsInverseEosOfRhoGDepth) {
   }
 }
 
-TEST(FluidHydrostatic, FollowsGravityNotAnAxisAndColumnTops) {
+TEST(WaterHydrostatic, FollowsGravityNotAnAxisAndColumnTops) {
   // Gravity along -x: "up" is +x. An L-shaped body (two blocks) has two column heights.
   const TaitEos eos(1000.0, 14.0, 7.0);
   auto x = sph::fill_shape<2>(testing::box({0, 0}, {0.2, 0.05}), 0.01);  // short columns: x < 0.2
@@ -64,8 +64,8 @@ TEST(FluidHydrostatic, FollowsGravityNotAnAxisAndColumnTops) {
 struct HydrostaticTank {
   const double dp = 0.005, h = 0.006, depth = 0.1;
   const TaitEos eos{1000.0, 10.0 * std::sqrt(9.81 * 0.1), 7.0};
-  FluidParams<2> params;
-  FluidParticles<2> P;
+  WaterParams<2> params;
+  WaterParticles<2> P;
   sph::NeighbourList<2> list;
 
   HydrostaticTank() {
@@ -87,7 +87,7 @@ struct HydrostaticTank {
   }
 };
 
-TEST(FluidWallBoundary, InterpolatedWallPressureReproducesHydrostaticField) {
+TEST(WaterWallBoundary, InterpolatedWallPressureReproducesHydrostaticField) {
   // p_w = (sum p_f W + g . sum rho_f x_wf W) / sum W is exact for p = rho g (H - y) when rho_f =
   // rho0; with rho_f = rho0 (1 + eps), eps <= 1 % here, the error is rho0 eps g |y_f - y_w| <~
   // 1.2 Pa out of ~1000 Pa: tolerance 0.3 % of rho0 g H.
@@ -113,7 +113,7 @@ TEST(FluidWallBoundary, InterpolatedWallPressureReproducesHydrostaticField) {
   EXPECT_EQ(t.P.wall_velocity[lonely].norm(), 0.0);
 }
 
-TEST(FluidDensityFilter, KeepsTheHydrostaticGradientNextToWalls) {
+TEST(WaterDensityFilter, KeepsTheHydrostaticGradientNextToWalls) {
   // The hydrostatic density grows by rho0 g / c^2 = 100 kg/m^4 with depth here; a filter that
   // ignored the floor would average one-sidedly and lower the bottom rows (by 0.13 kg/m^3,
   // measured). With the walls' extrapolated densities in the sums the field must stay within
@@ -132,7 +132,7 @@ TEST(FluidDensityFilter, KeepsTheHydrostaticGradientNextToWalls) {
   EXPECT_LT(worst, 0.05);
 }
 
-TEST(FluidDensityFilter, KeepsUniformInteriorAndSmoothsNoise) {
+TEST(WaterDensityFilter, KeepsUniformInteriorAndSmoothsNoise) {
   // Shepard filter on a lattice of equal masses: rho0 in the interior stays rho0 (to 1e-9
   // relative: the Shepard ratio of a constant is exact); random +-1 % noise shrinks (the filtered
   // value is a weighted mean of the neighbours', so the spread must drop by well over half).
@@ -156,4 +156,4 @@ TEST(FluidDensityFilter, KeepsUniformInteriorAndSmoothsNoise) {
 }
 
 }  // namespace
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -9,10 +9,10 @@
 #include <cmath>
 #include <vector>
 
-#include "fluid_fixtures.h"
-#include "fluid_solver/fluid_solver.h"
+#include "fluid_solver/water_solver.h"
+#include "water_fixtures.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 namespace {
 
 using testing::box;
@@ -37,7 +37,7 @@ TEST(WaterImpulseBook, MomentumChangesByTheBookedImpulsesEveryStep) {
   s.water->reservoirs = {reservoir({0, 0}, {0.08, 0.3}, 0.14),      // refills every column
                          reservoir({0.18, 0}, {0.24, 0.3}, 0.07)};  // removes the top
   s.walls = {testing::container({0, 0}, {0.3, 0.3}, 3)};
-  FluidSolver<2> f(s);
+  WaterSolver<2> f(s);
   coupling::StepState state;
   const std::vector<double> none;
   const std::vector<std::string> sources = f.impulse_sources();
@@ -93,4 +93,4 @@ TEST(WaterImpulseBook, MomentumChangesByTheBookedImpulsesEveryStep) {
 }
 
 }  // namespace
-}  // namespace porosph::fluid
+}  // namespace porosph::water

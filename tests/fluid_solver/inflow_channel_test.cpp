@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "fluid_fixtures.h"
-#include "fluid_solver/fluid_solver.h"
+#include "fluid_solver/water_solver.h"
+#include "water_fixtures.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 namespace {
 
 using testing::box;
@@ -35,7 +35,7 @@ void check_channel(const std::string& wall_condition) {
   s.water->inflows.push_back(inflow({0.0, 0.0}, {0.1, H}, {1.0, 0.0}, U, 0.0, 0.1));
   s.water->blocks.push_back(box({0.1, 0.0}, {0.5, H}));
   s.water->outflows.push_back(outflow({0.5, -0.05}, {0.7, H + 0.05}));
-  FluidSolver<2> f(s);
+  WaterSolver<2> f(s);
   const std::size_t n0 = f.free_count();
   ASSERT_EQ(n0, 500u);  // 10 x 10 in the zone + 40 x 10 in the channel
 
@@ -44,7 +44,7 @@ void check_channel(const std::string& wall_condition) {
   const double x_c = 0.3, t1 = 0.4, t2 = 1.0;
   std::vector<double> last_x;
   auto record = [&](double* crossed_mass) {
-    const FluidParticles<2>& P = f.particles();
+    const WaterParticles<2>& P = f.particles();
     for (std::size_t a = 0; a < P.n_free; ++a) {
       const std::size_t id = static_cast<std::size_t>(P.id[a]);
       if (id >= last_x.size()) last_x.resize(id + 1, std::nan(""));
@@ -97,4 +97,4 @@ TEST(InflowChannel, MassFluxEqualsRhoSpeedCrossSectionAndCountStaysBounded) {
 }
 
 }  // namespace
-}  // namespace porosph::fluid
+}  // namespace porosph::water

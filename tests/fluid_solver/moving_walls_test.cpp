@@ -4,10 +4,10 @@
 
 #include <cmath>
 
-#include "fluid_solver/fluid_solver.h"
-#include "tests/fluid_solver/fluid_fixtures.h"
+#include "fluid_solver/water_solver.h"
+#include "tests/fluid_solver/water_fixtures.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 namespace {
 
 scene::Shape wall_box(std::vector<double> lo, std::vector<double> hi) {
@@ -37,7 +37,7 @@ scene::Scene column_on_a_moving_floor() {
 }
 
 TEST(MovingWalls, TheFloorCarriesTheWeightOfStillWater) {
-  FluidSolver<2> solver(column_on_a_moving_floor());
+  WaterSolver<2> solver(column_on_a_moving_floor());
   solver.compute_rates();
   coupling::StepState state;
   solver.fill_state(state, {}, {});
@@ -49,8 +49,8 @@ TEST(MovingWalls, TheFloorCarriesTheWeightOfStillWater) {
 }
 
 TEST(MovingWalls, AMovingWallMovesByDtTimesItsSpeedAndTheOthersStay) {
-  FluidSolver<2> solver(column_on_a_moving_floor());
-  const FluidParticles<2>& P = solver.particles();
+  WaterSolver<2> solver(column_on_a_moving_floor());
+  const WaterParticles<2>& P = solver.particles();
   std::vector<sph::Vec<2>> before(P.position.begin(), P.position.end());
   std::vector<std::int32_t> motion(P.wall_motion.begin(), P.wall_motion.end());
   solver.compute_rates();
@@ -75,4 +75,4 @@ TEST(MovingWalls, AMovingWallMovesByDtTimesItsSpeedAndTheOthersStay) {
 }
 
 }  // namespace
-}  // namespace porosph::fluid
+}  // namespace porosph::water

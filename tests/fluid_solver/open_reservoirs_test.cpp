@@ -12,11 +12,11 @@
 #include <cstdio>
 #include <vector>
 
-#include "fluid_fixtures.h"
-#include "fluid_solver/fluid_solver.h"
+#include "fluid_solver/water_solver.h"
 #include "tests/support/solver_checkpoint_check.h"
+#include "water_fixtures.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 namespace {
 
 using Vec2 = sph::Vec<2>;
@@ -94,7 +94,7 @@ scene::Scene open_tank(double dp, double level) {
 }
 
 /// Mean over the columns x in (0, 0.6) (width dp) of the highest free particle + dp/2.
-double mean_surface(const FluidParticles<2>& P, double dp) {
+double mean_surface(const WaterParticles<2>& P, double dp) {
   const int columns = static_cast<int>(std::lround(0.6 / dp));
   std::vector<double> top(columns, -1.0);
   for (std::size_t a = 0; a < P.n_free; ++a) {
@@ -108,13 +108,13 @@ double mean_surface(const FluidParticles<2>& P, double dp) {
   return sum / columns;
 }
 
-std::size_t buffer_count(const FluidParticles<2>& P) {
+std::size_t buffer_count(const WaterParticles<2>& P) {
   std::size_t n = 0;
   for (std::size_t a = 0; a < P.n_free; ++a) n += P.zone[a] >= 0 ? 1 : 0;
   return n;
 }
 
-double max_free_speed(const FluidParticles<2>& P) {
+double max_free_speed(const WaterParticles<2>& P) {
   double v = 0.0;
   for (std::size_t a = 0; a < P.n_free; ++a)
     if (P.zone[a] < 0) v = std::max(v, P.velocity[a].norm());
@@ -126,7 +126,7 @@ TEST(OpenReservoirs, StillWaterAtTheReservoirsLevelStaysStill) {
   // sqrt(g H) = 17 mm/s (the hydrostatic tank's target), the surface within dp/10.
   const double dp = 0.02;
   const scene::Scene s = open_tank(dp, 0.3);
-  FluidSolver<2> f(s);
+  WaterSolver<2> f(s);
   coupling::StepState state;
   double worst_speed = 0.0;
   while (f.time() < 1.0) {
@@ -151,7 +151,7 @@ TEST(OpenReservoirs, TankFillsToTheReservoirsLevelAndTheExchangeIsBooked) {
   // (1e-11, 1e-12, as the impulse book test).
   const double dp = 0.02, level = 0.34;
   const scene::Scene s = open_tank(dp, level);
-  FluidSolver<2> f(s);
+  WaterSolver<2> f(s);
   coupling::StepState state;
   const std::vector<double> none;
   f.compute_rates();
@@ -207,7 +207,7 @@ TEST(OpenReservoirs, TankFillsToTheReservoirsLevelAndTheExchangeIsBooked) {
 
 TEST(OpenReservoirs, BufferContinuesBitForBitAfterACheckpoint) {
   const scene::Scene s = open_tank(0.02, 0.34);
-  FluidSolver<2> first(s), second(s);
+  WaterSolver<2> first(s), second(s);
   porosph::testing::expect_checkpoint_continues_exactly(first, second, 600, 300, s.run.dt0);
   EXPECT_GT(first.born_count(), 0u);
   EXPECT_EQ(second.born_count(), first.born_count());
@@ -215,4 +215,4 @@ TEST(OpenReservoirs, BufferContinuesBitForBitAfterACheckpoint) {
 }
 
 }  // namespace
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -14,7 +14,7 @@
 #include "sph/lattice_gradient.h"
 #include "sph/neighbour_list.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 namespace {
 
 using Vec2 = sph::Vec<2>;
@@ -101,4 +101,4 @@ TEST(ParticleGradient, HexagonalPackingGetsExactLinearGradients) {
 }
 
 }  // namespace
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -7,7 +7,7 @@
 
 #include <stdexcept>
 
-namespace porosph::fluid {
+namespace porosph::water {
 namespace {
 
 using Vec = sph::Vec<2>;
@@ -60,4 +60,4 @@ TEST(PoreFields, BeforeAnyPorosityTheFieldsMatchTheParticles) {
 }
 
 }  // namespace
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -9,11 +9,11 @@
 #include <cmath>
 #include <cstdio>
 
-#include "fluid_fixtures.h"
-#include "fluid_solver/fluid_solver.h"
+#include "fluid_solver/water_solver.h"
 #include "tests/support/solver_checkpoint_check.h"
+#include "water_fixtures.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 namespace {
 
 using Vec2 = sph::Vec<2>;
@@ -72,7 +72,7 @@ scene::Scene drained_tank() {
   return s;
 }
 
-double free_mass(const FluidParticles<2>& P) {
+double free_mass(const WaterParticles<2>& P) {
   double m = 0.0;
   for (std::size_t a = 0; a < P.n_free; ++a) m += P.mass[a];
   return m;
@@ -85,7 +85,7 @@ TEST(Reservoirs, HoldLevelWhileTheTankDrainsAndBookTheMass) {
   // out of the box sideways, dips to 1.55 dp below); the water's mass equals initial + inflow -
   // outflow to 1e-12 relative (measured 7.6e-15); the reservoir fed the drain (21 of 50 kg/m).
   const scene::Scene s = drained_tank();
-  FluidSolver<2> f(s);
+  WaterSolver<2> f(s);
   const double initial = free_mass(f.particles());
   coupling::StepState state;
   const std::vector<double> none;
@@ -128,7 +128,7 @@ TEST(Reservoirs, HoldLevelWhileTheTankDrainsAndBookTheMass) {
 TEST(Reservoirs, RefillContinuesBitForBitAfterACheckpoint) {
   // The first refills come at t = 0.149 s (step ~1650): checkpoint after 1900 steps, 300 more.
   const scene::Scene s = drained_tank();
-  FluidSolver<2> first(s), second(s);
+  WaterSolver<2> first(s), second(s);
   porosph::testing::expect_checkpoint_continues_exactly(first, second, 1900, 300, s.run.dt0);
   EXPECT_GT(first.born_count(), 0u);
   EXPECT_EQ(second.born_count(), first.born_count());
@@ -136,4 +136,4 @@ TEST(Reservoirs, RefillContinuesBitForBitAfterACheckpoint) {
 }
 
 }  // namespace
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -1,14 +1,14 @@
-// FluidSolver: a still water column stays still with hydrostatic pressure; exact integration of a
+// WaterSolver: a still water column stays still with hydrostatic pressure; exact integration of a
 // free particle; periodic wrap; removal; interaction; non-finite detection; snapshots.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
-#include "fluid_fixtures.h"
-#include "fluid_solver/fluid_solver.h"
+#include "fluid_solver/water_solver.h"
+#include "water_fixtures.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 namespace {
 
 using Vec2 = sph::Vec<2>;
@@ -16,7 +16,7 @@ using testing::box;
 using testing::container;
 using testing::water_scene;
 
-TEST(FluidSolver, StillWaterColumnStaysStillWithHydrostaticPressure) {
+TEST(WaterSolver, StillWaterColumnStaysStillWithHydrostaticPressure) {
   // 0.2 m wide, d = 0.1 m deep column at dp = 5 mm (800 water particles) in a 3-layer container;
   // c = 10 sqrt(g d), alpha 0.05, mu 1e-3; 400 steps at dt = min of the limits (~0.05 s, more than
   // one acoustic period 4 d / c = 0.04 s).
@@ -30,7 +30,7 @@ TEST(FluidSolver, StillWaterColumnStaysStillWithHydrostaticPressure) {
   probe.kind = "pressure_at";
   probe.point = {0.1, 0.5 * d};
   s.observables.push_back(probe);
-  FluidSolver<2> f(s);
+  WaterSolver<2> f(s);
   ASSERT_EQ(f.free_count(), 800u);
   coupling::StepState state;
   for (int i = 0; i < 400; ++i) {
@@ -56,13 +56,13 @@ TEST(FluidSolver, StillWaterColumnStaysStillWithHydrostaticPressure) {
   EXPECT_NEAR(state.diagnostics.mass, 1000.0 * 0.2 * d, 0.01 * 1000.0 * 0.2 * d);
 }
 
-TEST(FluidSolver, FreeParticleFollowsTheExactParabola) {
+TEST(WaterSolver, FreeParticleFollowsTheExactParabola) {
   // One water particle, no neighbours: x = x0 + a t^2 / 2, v = a t with a = g, for Euler and
   // Verlet steps alike (round-off only).
   scene::Scene s = water_scene(0.01, {-10, -10}, {10, 10});
   s.run.gravity = {0.3, -9.81};
   s.water->blocks.push_back(box({0, 0}, {0.01, 0.01}));
-  FluidSolver<2> f(s);
+  WaterSolver<2> f(s);
   ASSERT_EQ(f.free_count(), 1u);
   const Vec2 x0(0.005, 0.005), a(0.3, -9.81);
   const double dt = 1e-3;
@@ -77,12 +77,12 @@ TEST(FluidSolver, FreeParticleFollowsTheExactParabola) {
   EXPECT_LT((f.particles().velocity[0] - a * t).norm(), 1e-11);
 }
 
-TEST(FluidSolver, TimeStepLimits) {
+TEST(WaterSolver, TimeStepLimits) {
   // Isolated particle at rest: dt_cfl = 0.2 h / c, dt_visc = 0.125 h^2 rho0 / mu,
   // dt_force = C_a sqrt(h / g).
   scene::Scene s = water_scene(0.01, {-1, -1}, {1, 1});
   s.water->blocks.push_back(box({0, 0}, {0.01, 0.01}));
-  FluidSolver<2> f(s);
+  WaterSolver<2> f(s);
   f.compute_rates();
   const double h = 0.012;
   EXPECT_NEAR(f.dt_limits().cfl, 0.2 * h / 20.0, 1e-15);
@@ -90,19 +90,19 @@ TEST(FluidSolver, TimeStepLimits) {
   EXPECT_NEAR(f.dt_limits().force, 0.25 * std::sqrt(h / 9.81), 1e-15);
   EXPECT_EQ(f.dt_limits().min(), f.dt_limits().cfl);
   s.water->viscosity = 0.0;
-  FluidSolver<2> inviscid(s);
+  WaterSolver<2> inviscid(s);
   inviscid.compute_rates();
   EXPECT_TRUE(std::isinf(inviscid.dt_limits().viscous));
 }
 
-TEST(FluidSolver, PeriodicAxisWrapsAParticleAcrossTheFace) {
+TEST(WaterSolver, PeriodicAxisWrapsAParticleAcrossTheFace) {
   // Domain x in [0, 0.1), periodic; a = +5 m/s^2 along x from x0 = 0.095: at t = 0.1 s the
   // unwrapped x = 0.095 + 2.5 * 0.01 = 0.12, i.e. 0.02 after re-entering at x = 0.
   scene::Scene s = water_scene(0.01, {0, -1}, {0.1, 1});
   s.run.periodic = {true, false};
   s.run.gravity = {5.0, 0.0};
   s.water->blocks.push_back(box({0.09, 0}, {0.1, 0.01}));
-  FluidSolver<2> f(s);
+  WaterSolver<2> f(s);
   for (int i = 0; i < 100; ++i) {
     f.compute_rates();
     f.advance(1e-3);
@@ -111,16 +111,16 @@ TEST(FluidSolver, PeriodicAxisWrapsAParticleAcrossTheFace) {
   EXPECT_EQ(f.free_count(), 1u);
   EXPECT_EQ(f.removed_count(), 0u);
   s.domain.max = {0.03, 1};  // shorter than 2 x support (0.048 m): rejected
-  EXPECT_THROW(FluidSolver<2>{s}, std::invalid_argument);
+  EXPECT_THROW(WaterSolver<2>{s}, std::invalid_argument);
 }
 
-TEST(FluidSolver, ParticleLeavingTheDomainIsRemovedAndIdsStayStable) {
+TEST(WaterSolver, ParticleLeavingTheDomainIsRemovedAndIdsStayStable) {
   // Two isolated particles falling from y = 0.005 (id 0) and y = 0.505 (id 1); the floor of the
   // domain is y = 0: after 0.05 s the first has left (t_exit = sqrt(2 * 0.005 / g) = 0.032 s).
   scene::Scene s = water_scene(0.01, {0, 0}, {1, 1});
   s.water->blocks.push_back(box({0.5, 0.0}, {0.51, 0.01}));
   s.water->blocks.push_back(box({0.5, 0.5}, {0.51, 0.51}));
-  FluidSolver<2> f(s);
+  WaterSolver<2> f(s);
   ASSERT_EQ(f.free_count(), 2u);
   for (int i = 0; i < 50; ++i) {
     f.compute_rates();
@@ -136,13 +136,13 @@ TEST(FluidSolver, ParticleLeavingTheDomainIsRemovedAndIdsStayStable) {
   EXPECT_EQ(state.diagnostics.free_count, 1u);
 }
 
-TEST(FluidSolver, InteractionAcceleratesTheOverlapParticles) {
+TEST(WaterSolver, InteractionAcceleratesTheOverlapParticles) {
   // Two isolated particles; only the one inside the overlap box gets the interaction (2, 0) m/s^2.
   // First step is an Euler step: v = (g + a_int) dt.
   scene::Scene s = water_scene(0.01, {-1, -1}, {1, 1});
   s.water->blocks.push_back(box({0.0, 0.0}, {0.01, 0.01}));
   s.water->blocks.push_back(box({0.5, 0.0}, {0.51, 0.01}));
-  FluidSolver<2> f(s);
+  WaterSolver<2> f(s);
   coupling::StepState state;
   f.compute_rates();
   f.fill_state(state, {0.4, -0.1}, {0.6, 0.1});
@@ -169,11 +169,11 @@ TEST(FluidSolver, InteractionAcceleratesTheOverlapParticles) {
   EXPECT_TRUE(state.region_min.size() == 2 && state.region_max.size() == 2);
 }
 
-TEST(FluidSolver, FindsAnInjectedNaNWithItsId) {
+TEST(WaterSolver, FindsAnInjectedNaNWithItsId) {
   scene::Scene s = water_scene(0.01, {-1, -1}, {1, 1});
   s.water->blocks.push_back(box({0.0, 0.0}, {0.01, 0.01}));
   s.water->blocks.push_back(box({0.5, 0.0}, {0.51, 0.01}));
-  FluidSolver<2> f(s);
+  WaterSolver<2> f(s);
   std::int64_t id = -1;
   f.compute_rates();
   EXPECT_FALSE(f.find_non_finite(&id).has_value());
@@ -189,13 +189,13 @@ TEST(FluidSolver, FindsAnInjectedNaNWithItsId) {
   EXPECT_EQ(f.free_count(), 2u);  // a NaN particle is reported, not silently removed
 }
 
-TEST(FluidSolver, WallsDisappearAtTheirRemovalTimeAndSnapshotsListEveryParticle) {
+TEST(WaterSolver, WallsDisappearAtTheirRemovalTimeAndSnapshotsListEveryParticle) {
   // A gate (box wall) removed at t = 2 ms next to a permanent wall; 10 water particles.
   scene::Scene s = water_scene(0.01, {-1, -1}, {1, 1});
   s.water->blocks.push_back(box({0.0, 0.0}, {0.1, 0.01}));
   s.walls.push_back(box({0.2, 0.0}, {0.23, 0.1}, 0.002));  // 3 x 10 = 30 particles
   s.walls.push_back(box({0.0, -0.03}, {0.1, 0.0}));        // 10 x 3 = 30 particles
-  FluidSolver<2> f(s);
+  WaterSolver<2> f(s);
   EXPECT_EQ(f.particle_count(), 70u);
   auto fields = f.snapshot_fields();
   ASSERT_EQ(fields.size(), 7u);
@@ -217,24 +217,24 @@ TEST(FluidSolver, WallsDisappearAtTheirRemovalTimeAndSnapshotsListEveryParticle)
   EXPECT_EQ(f.snapshot_fields()[5].rows, 40u);
 }
 
-TEST(FluidSolver, RejectsBadScenes) {
+TEST(WaterSolver, RejectsBadScenes) {
   scene::Scene s = water_scene(0.01, {-1, -1}, {1, 1});
   s.run.kernel = "gaussian";
-  EXPECT_THROW(FluidSolver<2>{s}, std::invalid_argument);
+  EXPECT_THROW(WaterSolver<2>{s}, std::invalid_argument);
   s.run.kernel = "wendland_c2";
-  EXPECT_NO_THROW(FluidSolver<2>{s});
-  EXPECT_THROW(FluidSolver<3>{s}, std::invalid_argument);  // run.dimension = 2
+  EXPECT_NO_THROW(WaterSolver<2>{s});
+  EXPECT_THROW(WaterSolver<3>{s}, std::invalid_argument);  // run.dimension = 2
   s.water.reset();
-  EXPECT_THROW(FluidSolver<2>{s}, std::invalid_argument);
+  EXPECT_THROW(WaterSolver<2>{s}, std::invalid_argument);
 }
 
 }  // namespace
-}  // namespace porosph::fluid
+}  // namespace porosph::water
 
-namespace porosph::fluid {
+namespace porosph::water {
 namespace {
 
-TEST(FluidSolver3D, StillWaterCubeWithWendlandKernel) {
+TEST(WaterSolver3D, StillWaterCubeWithWendlandKernel) {
   // 3D, Wendland C2: a 5 cm water cube at dp = 5 mm (1000 particles) in a 3-layer container,
   // 150 steps (~0.02 s, half an acoustic period 4 d / c = 0.03 s). Same bounds as the 2D column:
   // speeds below 1 % of sqrt(g d), no particle lost, walls below the water under pressure.
@@ -246,7 +246,7 @@ TEST(FluidSolver3D, StillWaterCubeWithWendlandKernel) {
   s.walls.back().open_faces = {"z+"};
   s.run.gravity = {0.0, 0.0, -g};
   s.water->blocks.push_back(testing::box({0, 0, 0}, {0.05, 0.05, d}));
-  FluidSolver<3> f(s);
+  WaterSolver<3> f(s);
   ASSERT_EQ(f.free_count(), 1000u);
   for (int i = 0; i < 150; ++i) {
     f.compute_rates();
@@ -264,4 +264,4 @@ TEST(FluidSolver3D, StillWaterCubeWithWendlandKernel) {
 }
 
 }  // namespace
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -7,17 +7,17 @@
 #include <random>
 #include <utility>
 
-#include "fluid_fixtures.h"
 #include "fluid_solver/artificial_viscosity.h"
 #include "fluid_solver/continuity.h"
 #include "fluid_solver/equation_of_state.h"
-#include "fluid_solver/fluid_rates.h"
 #include "fluid_solver/pressure_force.h"
 #include "fluid_solver/viscosity_morris.h"
+#include "fluid_solver/water_rates.h"
 #include "sph/kernels.h"
 #include "sph/neighbour_list.h"
+#include "water_fixtures.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 namespace {
 
 using Vec2 = sph::Vec<2>;
@@ -32,13 +32,13 @@ struct TwoParticles {
   const double eta2 = 0.01 * h * h;
 };
 
-TEST(FluidTerms, KernelGradientOfTheFixture) {
+TEST(WaterTerms, KernelGradientOfTheFixture) {
   const TwoParticles t;
   const sph::CubicSpline<2> kernel(t.h);
   EXPECT_NEAR(kernel.gradient(t.x_ab, t.r)[0], t.grad_w[0], 1e-6);
 }
 
-TEST(FluidTerms, ContinuityOfApproachingPairIsPositive) {
+TEST(WaterTerms, ContinuityOfApproachingPairIsPositive) {
   // v_ab = (1, 0): (m_b / rho_b) v_ab . grad W = 1e-4 * 450181.12 = 45.018112; drho_a/dt = rho_a x.
   const TwoParticles t;
   const double term = continuity_term<2>(t.m_b / 1000.0, Vec2(1.0, 0.0), t.grad_w);
@@ -46,7 +46,7 @@ TEST(FluidTerms, ContinuityOfApproachingPairIsPositive) {
   EXPECT_NEAR(continuity_term<2>(t.m_b / 1000.0, Vec2(-1.0, 0.0), t.grad_w), -term, 1e-12);
 }
 
-TEST(FluidTerms, PressureIsRepulsive) {
+TEST(WaterTerms, PressureIsRepulsive) {
   // -m_b (p_a + p_b) / (rho_a rho_b) grad W = -0.1 * 400 / 1e6 * 450181.12 = -18.007245 (away
   // from b).
   const TwoParticles t;
@@ -55,7 +55,7 @@ TEST(FluidTerms, PressureIsRepulsive) {
   EXPECT_EQ(acc[1], 0.0);
 }
 
-TEST(FluidTerms, MorrisViscosityOpposesRelativeVelocity) {
+TEST(WaterTerms, MorrisViscosityOpposesRelativeVelocity) {
   // factor = x_ab . grad W / (r^2 + 0.01 h^2) = -2701.0867 / 3.7e-5 = -73002.34;
   // a = m_b (mu_a + mu_b) / (rho_a rho_b) factor v_ab = 0.1 * 2e-3 / 1e6 * factor = -0.0146005.
   const TwoParticles t;
@@ -71,7 +71,7 @@ TEST(FluidTerms, MorrisViscosityOpposesRelativeVelocity) {
   EXPECT_LT(shear[1], 0.0);
 }
 
-TEST(FluidTerms, ArtificialViscosityRepelsApproachingAndIgnoresReceding) {
+TEST(WaterTerms, ArtificialViscosityRepelsApproachingAndIgnoresReceding) {
   // alpha 0.1, beta 0, c = 20: mu_ab = h v.x / (r^2 + eta^2) = -1.621622,
   // Pi = -alpha c mu / rho = 0.00324324, a = -m_b Pi grad W = -146.0047 (decelerates a).
   const TwoParticles t;
@@ -89,7 +89,7 @@ TEST(FluidTerms, ArtificialViscosityRepelsApproachingAndIgnoresReceding) {
               1.6216216216216217 * 1.6216216216216217 / 1000, 1e-15);
 }
 
-TEST(FluidTerms, TaitEquationOfStateAndInverse) {
+TEST(WaterTerms, TaitEquationOfStateAndInverse) {
   // B = rho0 c^2 / gamma = 1000 * 400 / 7; p(1010) = B (1.01^7 - 1) = 3874.92 Pa.
   const TaitEos eos(1000.0, 20.0, 7.0);
   EXPECT_NEAR(eos.b(), 400000.0 / 7.0, 1e-9);
@@ -105,15 +105,15 @@ TEST(FluidTerms, TaitEquationOfStateAndInverse) {
   EXPECT_NEAR(eos.density(-2.0 * eos.b()), 500.0, 1e-9);
 }
 
-TEST(FluidTerms, RatesLoopSumsTheTermsPlusGravity) {
-  // The two-particle fixture through compute_fluid_rates (mu 1e-3, alpha 0.1, c 20, g = -9.81 y):
+TEST(WaterTerms, RatesLoopSumsTheTermsPlusGravity) {
+  // The two-particle fixture through compute_water_rates (mu 1e-3, alpha 0.1, c 20, g = -9.81 y):
   // a_a = pressure + Morris + artificial + g, drho_a = rho_a * continuity.
   const TwoParticles t;
   auto P = testing::make_particles<2>({Vec2(0, 0), Vec2(0.006, 0)}, 2, 1000.0, t.m_b);
   P.velocity[0] = Vec2(1.0, 0.0);
   P.pressure[0] = 100.0;
   P.pressure[1] = 300.0;
-  FluidParams<2> params;
+  WaterParams<2> params;
   params.h = t.h;
   params.mu = 1e-3;
   params.eta2 = t.eta2;
@@ -121,7 +121,7 @@ TEST(FluidTerms, RatesLoopSumsTheTermsPlusGravity) {
   params.gravity = Vec2(0.0, -9.81);
   sph::NeighbourList<2> list;
   list.build(P.position.data(), 2, 2, 2.0 * t.h, sph::DomainBox<2>{});
-  const RateSummary s = compute_fluid_rates(list, sph::CubicSpline<2>(t.h), params, P);
+  const RateSummary s = compute_water_rates(list, sph::CubicSpline<2>(t.h), params, P);
   const double expected_x = -18.00724498982587 - 0.014600468910669625 - 146.00468910669625;
   EXPECT_NEAR(P.acceleration[0][0], expected_x, 1e-8);
   EXPECT_NEAR(P.acceleration[0][1], -9.81, 1e-12);
@@ -130,7 +130,7 @@ TEST(FluidTerms, RatesLoopSumsTheTermsPlusGravity) {
   EXPECT_NEAR(s.max_speed, 1.0, 1e-15);
 }
 
-TEST(FluidTerms, PairLoopConservesMomentum) {
+TEST(WaterTerms, PairLoopConservesMomentum) {
   // Random cloud, random pressures, densities and velocities, no gravity: every term is
   // antisymmetric in (a, b), so sum_a m_a dv_a/dt vanishes to round-off (1e-12 of sum |m a|).
   std::mt19937 rng(7);
@@ -145,14 +145,14 @@ TEST(FluidTerms, PairLoopConservesMomentum) {
     P.sound_speed[i] = 20.0 + u(rng);
     P.velocity[i] = Vec2(u(rng) - 0.5, u(rng) - 0.5);
   }
-  FluidParams<2> params;
+  WaterParams<2> params;
   params.h = 0.006;
   params.mu = 1e-3;
   params.eta2 = 0.01 * params.h * params.h;
   params.artificial = ArtificialViscosity{0.1, 0.2, params.h};
   sph::NeighbourList<2> list;
   list.build(P.position.data(), x.size(), x.size(), 2.0 * params.h, sph::DomainBox<2>{});
-  compute_fluid_rates(list, sph::CubicSpline<2>(params.h), params, P);
+  compute_water_rates(list, sph::CubicSpline<2>(params.h), params, P);
   Vec2 total = Vec2::Zero();
   double scale = 0.0;
   for (std::size_t i = 0; i < x.size(); ++i) {
@@ -165,7 +165,7 @@ TEST(FluidTerms, PairLoopConservesMomentum) {
 
 /// A random cloud of water particles with random velocities at two levels, densities near rho0,
 /// a uniform pressure (for the difference-form test) and mu, alpha > 0.
-FluidParticles<2> random_cloud(std::size_t count, double pressure, std::mt19937& rng) {
+WaterParticles<2> random_cloud(std::size_t count, double pressure, std::mt19937& rng) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<Vec2> x(count);
   for (auto& p : x) p = Vec2(0.1 * u(rng), 0.1 * u(rng));
@@ -181,14 +181,14 @@ FluidParticles<2> random_cloud(std::size_t count, double pressure, std::mt19937&
   return P;
 }
 
-TEST(FluidTerms, ViscousTermsOfAVerletStepActOnThePreviousLevel) {
+TEST(WaterTerms, ViscousTermsOfAVerletStepActOnThePreviousLevel) {
   // viscous_level.h: at ViscousLevel::Previous the Morris and artificial viscosities take v^{n-1}
   // (velocity_previous); the continuity equation and the reported speed keep v^n. Same rates as
   // evaluating everything at the current level with the two velocity levels swapped, except
   // the continuity term.
   std::mt19937 rng(11);
   auto P = random_cloud(200, 0.0, rng);
-  FluidParams<2> params;
+  WaterParams<2> params;
   params.h = 0.006;
   params.mu = 1e-3;
   params.eta2 = 0.01 * params.h * params.h;
@@ -197,12 +197,12 @@ TEST(FluidTerms, ViscousTermsOfAVerletStepActOnThePreviousLevel) {
   list.build(P.position.data(), P.size(), P.size(), 2.0 * params.h, sph::DomainBox<2>{});
   const sph::CubicSpline<2> kernel(params.h);
   auto lagged = P;
-  const RateSummary s = compute_fluid_rates(list, kernel, params, lagged, ViscousLevel::Previous);
+  const RateSummary s = compute_water_rates(list, kernel, params, lagged, ViscousLevel::Previous);
   auto swapped = P;
   std::swap(swapped.velocity, swapped.velocity_previous);
-  compute_fluid_rates(list, kernel, params, swapped, ViscousLevel::Current);
+  compute_water_rates(list, kernel, params, swapped, ViscousLevel::Current);
   auto current = P;
-  compute_fluid_rates(list, kernel, params, current, ViscousLevel::Current);
+  compute_water_rates(list, kernel, params, current, ViscousLevel::Current);
   double largest = 0.0, change = 0.0;
   for (std::size_t i = 0; i < P.size(); ++i) {
     EXPECT_NEAR((lagged.acceleration[i] - swapped.acceleration[i]).norm(), 0.0,
@@ -217,7 +217,7 @@ TEST(FluidTerms, ViscousTermsOfAVerletStepActOnThePreviousLevel) {
   EXPECT_EQ(s.max_speed, max_speed);
 }
 
-TEST(FluidTerms, PressureDifferenceFormWithShiftingIsZerothOrderConsistent) {
+TEST(WaterTerms, PressureDifferenceFormWithShiftingIsZerothOrderConsistent) {
   // pressure_force.h: with particle shifting on, a uniform pressure exerts no force on a
   // disordered cloud (difference form); the symmetric form pushes every particle by
   // 2 p / rho grad C, the residue the shifting does not need.
@@ -225,15 +225,15 @@ TEST(FluidTerms, PressureDifferenceFormWithShiftingIsZerothOrderConsistent) {
   auto P = random_cloud(300, 5000.0, rng);
   for (auto& v : P.velocity) v = Vec2::Zero();
   P.velocity_previous = P.velocity;
-  FluidParams<2> params;
+  WaterParams<2> params;
   params.h = 0.006;
   sph::NeighbourList<2> list;
   list.build(P.position.data(), P.size(), P.size(), 2.0 * params.h, sph::DomainBox<2>{});
   const sph::CubicSpline<2> kernel(params.h);
   auto symmetric = P;
-  compute_fluid_rates(list, kernel, params, symmetric);
+  compute_water_rates(list, kernel, params, symmetric);
   params.particle_shifting = 2.0;
-  compute_fluid_rates(list, kernel, params, P);
+  compute_water_rates(list, kernel, params, P);
   double residue = 0.0;
   for (std::size_t i = 0; i < P.size(); ++i) {
     EXPECT_EQ(P.acceleration[i].norm(), 0.0);
@@ -243,4 +243,4 @@ TEST(FluidTerms, PressureDifferenceFormWithShiftingIsZerothOrderConsistent) {
 }
 
 }  // namespace
-}  // namespace porosph::fluid
+}  // namespace porosph::water

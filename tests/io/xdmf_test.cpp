@@ -43,7 +43,7 @@ XdmfPhaseSeries write_phase(const std::string& h5_path, const std::string& h5_na
 
 /// Fluid at outputs 0, 1, 2 (output 1 empty); soil at outputs 0 and 2 only.
 std::vector<XdmfPhaseSeries> write_two_phases(const ScratchDir& dir) {
-  return {write_phase(dir.file("water.h5"), "water.h5", "fluid", 2,
+  return {write_phase(dir.file("water.h5"), "water.h5", "water", 2,
                       {{0, 0.0, 4}, {1, 0.1, 0}, {2, 0.2, 3}}),
           write_phase(dir.file("soil.h5"), "soil.h5", "soil", 2, {{0, 0.0, 6}, {2, 0.2, 5}})};
 }
@@ -78,7 +78,7 @@ TEST(WriteXdmf, StructureIsATemporalCollectionOfSpatialCollections) {
   ASSERT_EQ(steps.size(), 3u);
   const std::vector<std::string> times = {"0", "0.1", "0.2"};
   const std::vector<std::vector<std::string>> phases = {
-      {"fluid", "soil"}, {"fluid"}, {"fluid", "soil"}};
+      {"water", "soil"}, {"water"}, {"water", "soil"}};
   for (std::size_t s = 0; s < steps.size(); ++s) {
     EXPECT_EQ(steps[s]->attribute("CollectionType"), "Spatial");
     ASSERT_EQ(steps[s]->children_named("Time").size(), 1u);

@@ -29,15 +29,15 @@ const std::vector<Boundary>& boundaries() {
         "porosph_coupler_core"}},
       {"soil_solver",
        {"fluid_solver/", "rigid_soil_solver/", "coupler/"},
-       {"porosph_fluid", "porosph_rigid_soil", "porosph_interaction", "porosph_coupler",
+       {"porosph_water", "porosph_rigid_soil", "porosph_interaction", "porosph_coupler",
         "porosph_coupler_core"}},
       {"rigid_soil_solver",
        {"fluid_solver/", "soil_solver/", "coupler/"},
-       {"porosph_fluid", "porosph_soil", "porosph_interaction", "porosph_coupler",
+       {"porosph_water", "porosph_soil", "porosph_interaction", "porosph_coupler",
         "porosph_coupler_core"}},
       {"porous",
        {"fluid_solver/", "soil_solver/", "rigid_soil_solver/", "coupler/"},
-       {"porosph_fluid", "porosph_soil", "porosph_rigid_soil", "porosph_interaction",
+       {"porosph_water", "porosph_soil", "porosph_rigid_soil", "porosph_interaction",
         "porosph_coupler", "porosph_coupler_core"}},
   };
   return all;

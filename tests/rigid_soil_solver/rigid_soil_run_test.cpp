@@ -78,11 +78,11 @@ TEST(RigidSoilRun, DarcyColumnFollowsDarcysLaw) {
   // water.h5 (docs/water-in-soil.md): the bed fills the periodic box, so the water sees the bed's
   // porosity 0.4 everywhere (to the kernel sum's error); its velocity is the Darcy velocity q and
   // pore_velocity = q / n, whose mean is the Darcy velocity over n0.
-  io::SnapshotReader fluid(run.out + "/water.h5");
-  const auto water_last = fluid.snapshots().back().index;
-  const auto porosity = fluid.read_f64(water_last, "porosity").values;
-  const auto velocity = fluid.read_f64(water_last, "velocity").values;
-  const auto pore = fluid.read_f64(water_last, "pore_velocity");
+  io::SnapshotReader water(run.out + "/water.h5");
+  const auto water_last = water.snapshots().back().index;
+  const auto porosity = water.read_f64(water_last, "porosity").values;
+  const auto velocity = water.read_f64(water_last, "velocity").values;
+  const auto pore = water.read_f64(water_last, "pore_velocity");
   ASSERT_EQ(pore.cols, 2u);
   ASSERT_EQ(pore.rows, porosity.size());
   double q_y = 0.0, u_y = 0.0;

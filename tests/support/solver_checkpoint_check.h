@@ -1,6 +1,6 @@
 // In-process check of a solver's write_checkpoint / restore_checkpoint: a solver restored from a
 // checkpoint taken after k steps continues exactly as the solver that wrote it (every particle
-// array bit for bit), for the fluid and soil solver tests.
+// array bit for bit), for the water and soil solver tests.
 #pragma once
 
 #include <gtest/gtest.h>

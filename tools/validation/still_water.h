@@ -26,7 +26,7 @@ struct StillWater {
 
   /// p(d) of still water d below its free surface: the solver's own TaitEos::still_water_pressure.
   double pressure(double depth) const {
-    return fluid::TaitEos(rho0, c0, gamma).still_water_pressure(depth, g);
+    return water::TaitEos(rho0, c0, gamma).still_water_pressure(depth, g);
   }
 
   /// Phi(p) / g: the depth of still water at pressure p, the pressure part of the head.

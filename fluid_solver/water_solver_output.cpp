@@ -1,17 +1,17 @@
-// FluidSolver's read-only reports: the non-finite check (with the Mach limit) and the snapshot
+// WaterSolver's read-only reports: the non-finite check (with the Mach limit) and the snapshot
 // fields.
 #include <algorithm>
 #include <cmath>
 
-#include "fluid_solver/fluid_solver.h"
+#include "fluid_solver/water_solver.h"
 #include "sph/mach_watch.h"
 #include "sph/non_finite_report.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 template <int D>
-std::optional<std::string> FluidSolver<D>::find_non_finite(std::int64_t* particle_id) const {
-  const FluidParticles<D>& P = particles_;
+std::optional<std::string> WaterSolver<D>::find_non_finite(std::int64_t* particle_id) const {
+  const WaterParticles<D>& P = particles_;
   const std::int64_t n = static_cast<std::int64_t>(P.size());
   const std::size_t values = P.size() * D;
   if (values == 0 || (sph::all_finite(P.position.data()->data(), values) &&
@@ -38,8 +38,8 @@ std::optional<std::string> FluidSolver<D>::find_non_finite(std::int64_t* particl
 }
 
 template <int D>
-std::vector<io::FieldView> FluidSolver<D>::snapshot_fields() const {
-  const FluidParticles<D>& P = particles_;
+std::vector<io::FieldView> WaterSolver<D>::snapshot_fields() const {
+  const WaterParticles<D>& P = particles_;
   const std::size_t n = P.size();
   auto f64 = [n](const char* name, std::size_t cols, const double* data, const char* unit) {
     io::FieldView f;
@@ -74,15 +74,15 @@ std::vector<io::FieldView> FluidSolver<D>::snapshot_fields() const {
 }
 
 template <int D>
-void FluidSolver<D>::set_porosity(const std::vector<double>& porosity) {
+void WaterSolver<D>::set_porosity(const std::vector<double>& porosity) {
   pore_fields_.update(porosity, overlap_index_, particles_.velocity);
 }
 
-template std::optional<std::string> FluidSolver<2>::find_non_finite(std::int64_t*) const;
-template std::optional<std::string> FluidSolver<3>::find_non_finite(std::int64_t*) const;
-template std::vector<io::FieldView> FluidSolver<2>::snapshot_fields() const;
-template std::vector<io::FieldView> FluidSolver<3>::snapshot_fields() const;
-template void FluidSolver<2>::set_porosity(const std::vector<double>&);
-template void FluidSolver<3>::set_porosity(const std::vector<double>&);
+template std::optional<std::string> WaterSolver<2>::find_non_finite(std::int64_t*) const;
+template std::optional<std::string> WaterSolver<3>::find_non_finite(std::int64_t*) const;
+template std::vector<io::FieldView> WaterSolver<2>::snapshot_fields() const;
+template std::vector<io::FieldView> WaterSolver<3>::snapshot_fields() const;
+template void WaterSolver<2>::set_porosity(const std::vector<double>&);
+template void WaterSolver<3>::set_porosity(const std::vector<double>&);
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

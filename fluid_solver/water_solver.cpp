@@ -1,4 +1,4 @@
-#include "fluid_solver/fluid_solver.h"
+#include "fluid_solver/water_solver.h"
 
 #include <algorithm>
 #include <chrono>
@@ -7,16 +7,16 @@
 #include <stdexcept>
 
 #include "fluid_solver/density_filter.h"
-#include "fluid_solver/fluid_rates.h"
 #include "fluid_solver/initial_particles.h"
 #include "fluid_solver/wall_boundary.h"
+#include "fluid_solver/water_rates.h"
 #include "sph/free_particle_totals.h"
 #include "sph/integrator.h"
 #include "sph/lattice_gradient.h"
 #include "sph/overlap_scatter.h"
 #include "sph/particle_removal.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 namespace {
 
 /// Water particles are re-sorted by cell this often (steps), for memory locality of the pair loops
@@ -37,8 +37,8 @@ class StopWatch {
 }  // namespace
 
 template <int D>
-FluidSolver<D>::FluidSolver(const scene::Scene& s)
-    : params_(FluidParams<D>::from_scene(s)),
+WaterSolver<D>::WaterSolver(const scene::Scene& s)
+    : params_(WaterParams<D>::from_scene(s)),
       terms_(scene::active_terms(s, "water")),
       box_(sph::DomainBox<D>::from_scene(s, 2.0 * params_.h)),
       kernel_(s.run.kernel, params_.h, s.run.dp, s.run.kernel_gradient != "plain"),
@@ -62,7 +62,7 @@ FluidSolver<D>::FluidSolver(const scene::Scene& s)
 }
 
 template <int D>
-void FluidSolver<D>::compute_rates() {
+void WaterSolver<D>::compute_rates() {
   StopWatch watch(physics_seconds_);
   cell_order_.refresh(neighbours_, particles_, box_, step_, overlap_index_);
   neighbours_per_particle_ = neighbours_.neighbours_per_free_particle();
@@ -71,7 +71,7 @@ void FluidSolver<D>::compute_rates() {
 
 template <int D>
 template <class Kernel>
-void FluidSolver<D>::compute_rates_with(const Kernel& kernel) {
+void WaterSolver<D>::compute_rates_with(const Kernel& kernel) {
   const bool filtered = density_filter_due();  // an Euler step (next_step_is_euler)
   // Viscous terms at v^{n-1} on a Verlet step (viscous_level.h).
   const ViscousLevel level = next_step_is_euler() ? ViscousLevel::Current : ViscousLevel::Previous;
@@ -82,7 +82,7 @@ void FluidSolver<D>::compute_rates_with(const Kernel& kernel) {
     update_water_pressure(params_, particles_);
     update_wall_state(neighbours_, kernel, params_, particles_, level);
   }
-  const RateSummary r = compute_fluid_rates(neighbours_, kernel, params_, particles_, level);
+  const RateSummary r = compute_water_rates(neighbours_, kernel, params_, particles_, level);
   moving_walls_.measure_forces(neighbours_, kernel, particles_, params_.shifting_on() ? -1.0 : 1.0);
   if (params_.shifting_on()) {
     shifting_.compute(neighbours_, kernel, params_.dp, r.max_speed, particles_);
@@ -93,7 +93,7 @@ void FluidSolver<D>::compute_rates_with(const Kernel& kernel) {
 }
 
 template <int D>
-double FluidSolver<D>::evaluate(const sph::PreparedObservable<D>& o,
+double WaterSolver<D>::evaluate(const sph::PreparedObservable<D>& o,
                                 const sph::ParticleView<D>& view) const {
   if (o.kind == sph::PreparedObservable<D>::Kind::WallForce) {  // moving_walls.h
     const int k = moving_walls_.index_of(o.wall);
@@ -105,11 +105,11 @@ double FluidSolver<D>::evaluate(const sph::PreparedObservable<D>& o,
 }
 
 template <int D>
-void FluidSolver<D>::fill_state(coupling::StepState& out, const std::vector<double>& overlap_min,
+void WaterSolver<D>::fill_state(coupling::StepState& out, const std::vector<double>& overlap_min,
                                 const std::vector<double>& overlap_max) {
   using Vec = sph::Vec<D>;
   StopWatch watch(physics_seconds_);
-  const FluidParticles<D>& P = particles_;
+  const WaterParticles<D>& P = particles_;
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
   out.step = step_;
   out.time = time_;
@@ -173,7 +173,7 @@ void FluidSolver<D>::fill_state(coupling::StepState& out, const std::vector<doub
 }
 
 template <int D>
-void FluidSolver<D>::add_interaction(const std::vector<double>& acceleration) {
+void WaterSolver<D>::add_interaction(const std::vector<double>& acceleration) {
   if (acceleration.size() != overlap_index_.size() * D) {
     throw std::invalid_argument("add_interaction: expected " +
                                 std::to_string(overlap_index_.size() * D) + " values, got " +
@@ -189,7 +189,7 @@ void FluidSolver<D>::add_interaction(const std::vector<double>& acceleration) {
 }
 
 template <int D>
-void FluidSolver<D>::set_drag_rate(const std::vector<double>& rate) {
+void WaterSolver<D>::set_drag_rate(const std::vector<double>& rate) {
   if (rate.empty() && !viscosity_cut_nonzero_) return;
   if (!rate.empty() && rate.size() != overlap_index_.size()) {
     throw std::invalid_argument("set_drag_rate: expected " + std::to_string(overlap_index_.size()) +
@@ -206,9 +206,9 @@ void FluidSolver<D>::set_drag_rate(const std::vector<double>& rate) {
 }
 
 template <int D>
-void FluidSolver<D>::advance(double dt) {
+void WaterSolver<D>::advance(double dt) {
   StopWatch watch(physics_seconds_);
-  FluidParticles<D>& P = particles_;
+  WaterParticles<D>& P = particles_;
   if (!interaction_fresh_ && interaction_nonzero_) {  // none this step, nor in next step's eq. 21
     std::fill(P.interaction.begin(), P.interaction.end(), sph::Vec<D>::Zero());
     interaction_nonzero_ = false;
@@ -223,21 +223,21 @@ void FluidSolver<D>::advance(double dt) {
 }
 
 template <int D>
-bool FluidSolver<D>::density_filter_due() const {
+bool WaterSolver<D>::density_filter_due() const {
   const int every = params_.density_filter_every;
   return every > 0 && step_ > 0 && step_ % static_cast<std::uint64_t>(every) == 0 &&
          !damping_.frozen(time_);
 }
 
 template <int D>
-bool FluidSolver<D>::next_step_is_euler() const {
+bool WaterSolver<D>::next_step_is_euler() const {
   const bool release = damping_.duration() > 0.0 && !damping_.released() && !damping_.frozen(time_);
   return sph::is_euler_step(step_, params_.euler_every) || density_filter_due() || release;
 }
 
 template <int D>
-void FluidSolver<D>::integrate(double dt) {
-  FluidParticles<D>& P = particles_;
+void WaterSolver<D>::integrate(double dt) {
+  WaterParticles<D>& P = particles_;
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
   // An Euler step also where dt jumps (the short last step of a run): the two Verlet time levels
   // hold the odd and even chains, and a step much shorter than the last one would hand the
@@ -289,8 +289,8 @@ void FluidSolver<D>::integrate(double dt) {
 }
 
 template <int D>
-bool FluidSolver<D>::leaves(std::size_t a) const {
-  const FluidParticles<D>& P = particles_;
+bool WaterSolver<D>::leaves(std::size_t a) const {
+  const WaterParticles<D>& P = particles_;
   if (box_.outside(P.position[a])) return true;
   if (open_.owns(P.zone[a])) return open_.past_far_face(P.zone[a], P.position[a]);
   return P.zone[a] < 0 &&
@@ -299,8 +299,8 @@ bool FluidSolver<D>::leaves(std::size_t a) const {
 }
 
 template <int D>
-void FluidSolver<D>::remove_leaving_particles() {
-  const FluidParticles<D>& P = particles_;
+void WaterSolver<D>::remove_leaving_particles() {
+  const WaterParticles<D>& P = particles_;
   const auto leaving = [this](std::size_t a) { return leaves(a); };
   const auto removing = [this, &P](std::size_t a) {  // its momentum leaves with it
     const bool outflow = box_.outside(P.position[a]) || zones_.in_outflow(P.position[a], time_) ||
@@ -312,12 +312,12 @@ void FluidSolver<D>::remove_leaving_particles() {
 }
 
 template <int D>
-void FluidSolver<D>::remove_expired_walls() {
+void WaterSolver<D>::remove_expired_walls() {
   if (next_wall_removal_ < 0.0 || time_ < next_wall_removal_) return;
   next_wall_removal_ = sph::remove_expired_fixed_particles(particles_, time_, keep_scratch_);
 }
 
-template class FluidSolver<2>;
-template class FluidSolver<3>;
+template class WaterSolver<2>;
+template class WaterSolver<3>;
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -1,16 +1,16 @@
-// FluidSolver's checkpoint (docs/checkpoints.md): the particle arrays and every scalar of the
+// WaterSolver's checkpoint (docs/checkpoints.md): the particle arrays and every scalar of the
 // state that survives a step. Scratch buffers and the neighbour list are rebuilt by the next
 // compute_rates().
 #include <algorithm>
 #include <stdexcept>
 
-#include "fluid_solver/fluid_solver.h"
+#include "fluid_solver/water_solver.h"
 #include "sph/checkpoint_arrays.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 template <int D>
-void FluidSolver<D>::write_checkpoint(io::CheckpointWriter& out) {
+void WaterSolver<D>::write_checkpoint(io::CheckpointWriter& out) {
   sph::write_particle_arrays(out, particles_);
   out.set("dimension", static_cast<std::int64_t>(D));
   out.set("time", time_);
@@ -35,7 +35,7 @@ void FluidSolver<D>::write_checkpoint(io::CheckpointWriter& out) {
 }
 
 template <int D>
-void FluidSolver<D>::restore_checkpoint(const io::CheckpointReader& in) {
+void WaterSolver<D>::restore_checkpoint(const io::CheckpointReader& in) {
   neighbours_.invalidate();
   if (in.get_i64("dimension") != D) {
     throw std::runtime_error(in.path() + ": a checkpoint of a run in another dimension");
@@ -64,9 +64,9 @@ void FluidSolver<D>::restore_checkpoint(const io::CheckpointReader& in) {
   book_.read(in);
 }
 
-template void FluidSolver<2>::write_checkpoint(io::CheckpointWriter&);
-template void FluidSolver<3>::write_checkpoint(io::CheckpointWriter&);
-template void FluidSolver<2>::restore_checkpoint(const io::CheckpointReader&);
-template void FluidSolver<3>::restore_checkpoint(const io::CheckpointReader&);
+template void WaterSolver<2>::write_checkpoint(io::CheckpointWriter&);
+template void WaterSolver<3>::write_checkpoint(io::CheckpointWriter&);
+template void WaterSolver<2>::restore_checkpoint(const io::CheckpointReader&);
+template void WaterSolver<3>::restore_checkpoint(const io::CheckpointReader&);
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

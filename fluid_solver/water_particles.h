@@ -8,10 +8,10 @@
 #include "fluid_solver/diffusion_state.h"
 #include "sph/vector.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 template <int D>
-struct FluidParticles {
+struct WaterParticles {
   using Vec = sph::Vec<D>;
   std::size_t n_free = 0;
 
@@ -38,7 +38,7 @@ struct FluidParticles {
   // Derived per step, not part of the particle state (not resized, permuted or checkpointed with
   // the arrays above; whoever fills them sizes them):
   /// 1 / rho and m / rho of every particle, from density and mass at the start of each rate
-  /// evaluation (fluid_rates.h), so that the pair loop multiplies instead of dividing.
+  /// evaluation (water_rates.h), so that the pair loop multiplies instead of dividing.
   std::vector<double> inverse_density, volume;
   /// Per water particle: the kernel gradient's renormalisation s_a (particle_gradient.h; 1 unless
   /// run.kernel_gradient = "particle"), filled at the start of each rate evaluation.
@@ -49,7 +49,7 @@ struct FluidParticles {
   /// The density diffusion's per-particle state (water particles only), filled with it.
   std::vector<DiffusionState> diffusion_state;
   /// Per water particle: the part of `acceleration` from its wall neighbours (pressure and
-  /// viscous terms; fluid_rates.h), filled with it: the walls' impulse in the solver's books.
+  /// viscous terms; water_rates.h), filled with it: the walls' impulse in the solver's books.
   std::vector<Vec> wall_acceleration;
   /// Per water particle: the part of `acceleration` by which the hydrostatic difference form
   /// inside soil departs from the antisymmetric pressure pairs (hydrostatic_difference.h; 0
@@ -66,18 +66,18 @@ struct FluidParticles {
   }
   /// Calls fn(array, other's same array) on every per-particle array.
   template <class Fn>
-  void for_each_array_with(const FluidParticles& other, Fn&& fn) {
+  void for_each_array_with(const WaterParticles& other, Fn&& fn) {
     apply_to_arrays(fn, *this, other);
   }
 
   /// Appends a copy of particle i of `source` (every array) at the end; n_free is unchanged.
-  void append_copy(const FluidParticles& source, std::size_t i) {
+  void append_copy(const WaterParticles& source, std::size_t i) {
     for_each_array_with(source, [i](auto& array, const auto& from) { array.push_back(from[i]); });
   }
 
   /// Inserts every particle of `born` as water particles at [n_free, n_free + born.size()) (the
   /// walls move up, in order); n_free grows. Allocates only when an array's capacity is exceeded.
-  void insert_free(const FluidParticles& born) {
+  void insert_free(const WaterParticles& born) {
     const std::ptrdiff_t at = static_cast<std::ptrdiff_t>(n_free);
     for_each_array_with(born, [at](auto& array, const auto& from) {
       array.insert(array.begin() + at, from.begin(), from.end());
@@ -147,4 +147,4 @@ struct FluidParticles {
   std::vector<std::uint8_t> scratch_u8_;
 };
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

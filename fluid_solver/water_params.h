@@ -12,10 +12,10 @@
 #include "scene/term_registry.h"
 #include "sph/vector.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 template <int D>
-struct FluidParams {
+struct WaterParams {
   double dp = 0.01;                ///< particle spacing [m]
   double h = 0.012;                ///< smoothing length [m]
   double volume = 1e-4;            ///< particle volume dp^D [m^D]
@@ -58,15 +58,15 @@ struct FluidParams {
   }
 
   /// Throws std::invalid_argument if the scene has no water or an unknown wall condition.
-  static FluidParams from_scene(const scene::Scene& s) {
-    if (!s.water) throw std::invalid_argument("fluid solver: the scene has no [water] phase");
+  static WaterParams from_scene(const scene::Scene& s) {
+    if (!s.water) throw std::invalid_argument("water solver: the scene has no [water] phase");
     if (s.run.dimension != D) {
-      throw std::invalid_argument("fluid solver built for D = " + std::to_string(D) +
+      throw std::invalid_argument("water solver built for D = " + std::to_string(D) +
                                   " but run.dimension = " + std::to_string(s.run.dimension));
     }
     const scene::WaterPhase& w = *s.water;
     const scene::TermSwitches on(s, "water");  // the registry decides what runs
-    FluidParams p;
+    WaterParams p;
     p.dp = s.run.dp;
     p.h = s.h();
     p.volume = std::pow(p.dp, D);
@@ -113,4 +113,4 @@ struct FluidParams {
   }
 };
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

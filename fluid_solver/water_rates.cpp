@@ -1,4 +1,4 @@
-#include "fluid_solver/fluid_rates.h"
+#include "fluid_solver/water_rates.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,12 +14,12 @@
 #include "fluid_solver/viscosity_morris.h"
 #include "sph/kernels.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 namespace {
 
 template <int D, class Kernel, bool kMorris, bool kArtificial, bool kNoSlip, bool kDiffusion>
 RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
-                       const FluidParams<D>& prm, FluidParticles<D>& P, ViscousLevel level) {
+                       const WaterParams<D>& prm, WaterParticles<D>& P, ViscousLevel level) {
   using Vec = sph::Vec<D>;
   constexpr bool kRegularised = kMorris || kArtificial || kDiffusion;  // need 1/(r^2 + eta^2)
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
@@ -171,7 +171,7 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
 
 template <int D, class Kernel, bool kMorris, bool kArtificial, bool kNoSlip>
 RateSummary dispatch_diffusion(const sph::NeighbourList<D>& nl, const Kernel& k,
-                               const FluidParams<D>& prm, FluidParticles<D>& P,
+                               const WaterParams<D>& prm, WaterParticles<D>& P,
                                ViscousLevel level) {
   if (prm.diffusion_on())
     return rates_loop<D, Kernel, kMorris, kArtificial, kNoSlip, true>(nl, k, prm, P, level);
@@ -180,7 +180,7 @@ RateSummary dispatch_diffusion(const sph::NeighbourList<D>& nl, const Kernel& k,
 
 template <int D, class Kernel, bool kMorris, bool kArtificial>
 RateSummary dispatch_wall(const sph::NeighbourList<D>& nl, const Kernel& k,
-                          const FluidParams<D>& prm, FluidParticles<D>& P, ViscousLevel level) {
+                          const WaterParams<D>& prm, WaterParticles<D>& P, ViscousLevel level) {
   if (prm.no_slip)
     return dispatch_diffusion<D, Kernel, kMorris, kArtificial, true>(nl, k, prm, P, level);
   return dispatch_diffusion<D, Kernel, kMorris, kArtificial, false>(nl, k, prm, P, level);
@@ -188,7 +188,7 @@ RateSummary dispatch_wall(const sph::NeighbourList<D>& nl, const Kernel& k,
 
 template <int D, class Kernel, bool kMorris>
 RateSummary dispatch_artificial(const sph::NeighbourList<D>& nl, const Kernel& k,
-                                const FluidParams<D>& prm, FluidParticles<D>& P,
+                                const WaterParams<D>& prm, WaterParticles<D>& P,
                                 ViscousLevel level) {
   if (prm.artificial_on()) return dispatch_wall<D, Kernel, kMorris, true>(nl, k, prm, P, level);
   return dispatch_wall<D, Kernel, kMorris, false>(nl, k, prm, P, level);
@@ -197,7 +197,7 @@ RateSummary dispatch_artificial(const sph::NeighbourList<D>& nl, const Kernel& k
 }  // namespace
 
 template <int D>
-void update_inverse_density_and_volume(FluidParticles<D>& P) {
+void update_inverse_density_and_volume(WaterParticles<D>& P) {
   const std::int64_t n = static_cast<std::int64_t>(P.size());
   P.inverse_density.resize(P.size());
   P.volume.resize(P.size());
@@ -209,7 +209,7 @@ void update_inverse_density_and_volume(FluidParticles<D>& P) {
 }
 
 template <int D>
-void update_water_pressure(const FluidParams<D>& params, FluidParticles<D>& P) {
+void update_water_pressure(const WaterParams<D>& params, WaterParticles<D>& P) {
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
   const TaitEos eos = params.eos;
 #pragma omp parallel for schedule(static)
@@ -220,8 +220,8 @@ void update_water_pressure(const FluidParams<D>& params, FluidParticles<D>& P) {
 }
 
 template <int D, class Kernel>
-RateSummary compute_fluid_rates(const sph::NeighbourList<D>& neighbours, const Kernel& kernel,
-                                const FluidParams<D>& params, FluidParticles<D>& P,
+RateSummary compute_water_rates(const sph::NeighbourList<D>& neighbours, const Kernel& kernel,
+                                const WaterParams<D>& params, WaterParticles<D>& P,
                                 ViscousLevel level) {
   update_inverse_density_and_volume(P);
   if (params.particle_gradient) {
@@ -235,17 +235,17 @@ RateSummary compute_fluid_rates(const sph::NeighbourList<D>& neighbours, const K
 }
 
 #define POROSPH_INSTANTIATE(D, KERNEL)                                                            \
-  template RateSummary compute_fluid_rates<D, KERNEL<D>>(const sph::NeighbourList<D>&,            \
-                                                         const KERNEL<D>&, const FluidParams<D>&, \
-                                                         FluidParticles<D>&, ViscousLevel);
+  template RateSummary compute_water_rates<D, KERNEL<D>>(const sph::NeighbourList<D>&,            \
+                                                         const KERNEL<D>&, const WaterParams<D>&, \
+                                                         WaterParticles<D>&, ViscousLevel);
 POROSPH_INSTANTIATE(2, sph::CubicSpline)
 POROSPH_INSTANTIATE(2, sph::WendlandC2)
 POROSPH_INSTANTIATE(3, sph::CubicSpline)
 POROSPH_INSTANTIATE(3, sph::WendlandC2)
 #undef POROSPH_INSTANTIATE
-template void update_inverse_density_and_volume<2>(FluidParticles<2>&);
-template void update_inverse_density_and_volume<3>(FluidParticles<3>&);
-template void update_water_pressure<2>(const FluidParams<2>&, FluidParticles<2>&);
-template void update_water_pressure<3>(const FluidParams<3>&, FluidParticles<3>&);
+template void update_inverse_density_and_volume<2>(WaterParticles<2>&);
+template void update_inverse_density_and_volume<3>(WaterParticles<3>&);
+template void update_water_pressure<2>(const WaterParams<2>&, WaterParticles<2>&);
+template void update_water_pressure<3>(const WaterParams<3>&, WaterParticles<3>&);
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

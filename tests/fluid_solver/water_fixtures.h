@@ -5,11 +5,11 @@
 #include <string>
 #include <vector>
 
-#include "fluid_solver/fluid_params.h"
-#include "fluid_solver/fluid_particles.h"
+#include "fluid_solver/water_params.h"
+#include "fluid_solver/water_particles.h"
 #include "scene/scene.h"
 
-namespace porosph::fluid::testing {
+namespace porosph::water::testing {
 
 inline scene::Shape box(std::vector<double> lo, std::vector<double> hi, double remove_at = -1.0) {
   scene::Shape s;
@@ -69,9 +69,9 @@ inline scene::Scene water_scene(double dp, std::vector<double> domain_min,
 /// Particles at `x` (the first n_free water), all arrays sized, at rest, rho = rho0, m = m0, no
 /// inflow-zone particle.
 template <int D>
-FluidParticles<D> make_particles(const std::vector<sph::Vec<D>>& x, std::size_t n_free, double rho0,
+WaterParticles<D> make_particles(const std::vector<sph::Vec<D>>& x, std::size_t n_free, double rho0,
                                  double m0) {
-  FluidParticles<D> P;
+  WaterParticles<D> P;
   P.n_free = n_free;
   const std::size_t n = x.size();
   P.for_each_array([n](auto& a) { a.resize(n); });
@@ -91,4 +91,4 @@ FluidParticles<D> make_particles(const std::vector<sph::Vec<D>>& x, std::size_t 
   return P;
 }
 
-}  // namespace porosph::fluid::testing
+}  // namespace porosph::water::testing

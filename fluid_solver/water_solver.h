@@ -12,14 +12,14 @@
 
 #include "fluid_solver/damping_stage.h"
 #include "fluid_solver/flow_zones.h"
-#include "fluid_solver/fluid_params.h"
-#include "fluid_solver/fluid_particles.h"
 #include "fluid_solver/moving_walls.h"
 #include "fluid_solver/open_reservoirs.h"
 #include "fluid_solver/particle_shifting.h"
 #include "fluid_solver/pore_fields.h"
 #include "fluid_solver/reservoirs.h"
 #include "fluid_solver/water_impulse_book.h"
+#include "fluid_solver/water_params.h"
+#include "fluid_solver/water_particles.h"
 #include "io/checkpoint_file.h"
 #include "io/snapshot_writer.h"
 #include "proto/coupling_client.h"
@@ -32,14 +32,14 @@
 #include "sph/observables.h"
 #include "sph/time_step_limits.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 template <int D>
-class FluidSolver {
+class WaterSolver {
  public:
   /// Particles from scene.water.blocks, the inflow zones and the walls acting on water
   /// (initial_particles.h); masses m = rho(t=0) dp^D. Throws std::invalid_argument on a bad scene.
-  explicit FluidSolver(const scene::Scene& scene);
+  explicit WaterSolver(const scene::Scene& scene);
 
   /// Neighbour search + wall state + all internal accelerations and drho/dt (+ density filter on
   /// its steps).
@@ -84,7 +84,7 @@ class FluidSolver {
   /// valid until the next compute_rates/advance.
   std::vector<io::FieldView> snapshot_fields() const;
   /// The physics terms this solver evaluates for its scene (run.json phases.water.terms): the
-  /// same predicates that select the compiled pair loop (fluid_rates.cpp) and the optional stages.
+  /// same predicates that select the compiled pair loop (water_rates.cpp) and the optional stages.
   /// The terms the registry switches on for the scene (scene/term_registry.h).
   const std::vector<std::string>& active_terms() const { return terms_; }
   /// The sources of the external impulses reported with each state (water_impulse_book.h).
@@ -93,7 +93,7 @@ class FluidSolver {
   const WaterImpulseBook<D>& impulse_book() const { return book_; }
 
   /// Stores the whole state the integrator carries from step to step (every particle array, the
-  /// counters, time, step, next id, damping release, pending wall removal; fluid_checkpoint.cpp).
+  /// counters, time, step, next id, damping release, pending wall removal; water_checkpoint.cpp).
   /// Call between advance() and the next compute_rates().
   void write_checkpoint(io::CheckpointWriter& out);
   /// Replaces the state with a checkpoint's (the solver must be built from the same scene); the
@@ -109,8 +109,8 @@ class FluidSolver {
   std::uint64_t born_count() const { return born_count_; }
 
   // Read access for tests and tools.
-  const FluidParticles<D>& particles() const { return particles_; }
-  const FluidParams<D>& params() const { return params_; }
+  const WaterParticles<D>& particles() const { return particles_; }
+  const WaterParams<D>& params() const { return params_; }
   const sph::NeighbourList<D>& neighbours() const { return neighbours_; }
   const FlowZones<D>& flow_zones() const { return zones_; }
   const Reservoirs<D>& reservoirs() const { return reservoirs_; }
@@ -133,7 +133,7 @@ class FluidSolver {
   void remove_expired_walls();
   double evaluate(const sph::PreparedObservable<D>& o, const sph::ParticleView<D>& view) const;
 
-  FluidParams<D> params_;
+  WaterParams<D> params_;
   std::vector<std::string> terms_;
   sph::DomainBox<D> box_;
   sph::KernelChoice<D> kernel_;  ///< run.kernel: the one dispatch to the compiled loops
@@ -144,7 +144,7 @@ class FluidSolver {
   MovingWalls<D> moving_walls_;  ///< [[walls]] with moves_with
   std::vector<sph::PreparedObservable<D>> observables_;
 
-  FluidParticles<D> particles_;
+  WaterParticles<D> particles_;
   sph::NeighbourList<D> neighbours_;
   sph::CellOrder<D> cell_order_{neighbours_, params_.h};  ///< search, re-sort by cell
   sph::DtLimits limits_;
@@ -171,7 +171,7 @@ class FluidSolver {
   mutable PoreFields<D> pore_fields_;      ///< porosity, pore velocity of the next snapshot
 };
 
-extern template class FluidSolver<2>;
-extern template class FluidSolver<3>;
+extern template class WaterSolver<2>;
+extern template class WaterSolver<3>;
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water

@@ -11,12 +11,12 @@
 // (free-slip). Terms that are off are compiled out of the pair loop (template flags).
 #pragma once
 
-#include "fluid_solver/fluid_params.h"
-#include "fluid_solver/fluid_particles.h"
 #include "fluid_solver/viscous_level.h"
+#include "fluid_solver/water_params.h"
+#include "fluid_solver/water_particles.h"
 #include "sph/neighbour_list.h"
 
-namespace porosph::fluid {
+namespace porosph::water {
 
 struct RateSummary {
   double max_speed = 0.0;  ///< max |v_a| over water particles
@@ -26,19 +26,19 @@ struct RateSummary {
 
 /// Pressure and sound speed of the water particles from their density (eq. 4).
 template <int D>
-void update_water_pressure(const FluidParams<D>& params, FluidParticles<D>& P);
+void update_water_pressure(const WaterParams<D>& params, WaterParticles<D>& P);
 
 /// P.inverse_density = 1 / rho and P.volume = m / rho of every particle (water and walls).
 template <int D>
-void update_inverse_density_and_volume(FluidParticles<D>& P);
+void update_inverse_density_and_volume(WaterParticles<D>& P);
 
 /// Fills P.inverse_density, P.volume (update_inverse_density_and_volume), P.acceleration, its
 /// walls' share P.wall_acceleration and P.density_rate of the water particles. Walls must be up to
 /// date (update_wall_state, at the same `level`) and water pressures too (update_water_pressure).
 /// `level`: the velocities the viscous terms act on (viscous_level.h).
 template <int D, class Kernel>
-RateSummary compute_fluid_rates(const sph::NeighbourList<D>& neighbours, const Kernel& kernel,
-                                const FluidParams<D>& params, FluidParticles<D>& P,
+RateSummary compute_water_rates(const sph::NeighbourList<D>& neighbours, const Kernel& kernel,
+                                const WaterParams<D>& params, WaterParticles<D>& P,
                                 ViscousLevel level = ViscousLevel::Current);
 
-}  // namespace porosph::fluid
+}  // namespace porosph::water
