@@ -16,13 +16,14 @@ namespace porosph::water {
 
 template <int D>
 struct WaterParams {
-  double dp = 0.01;                ///< particle spacing [m]
-  double h = 0.012;                ///< smoothing length [m]
-  double volume = 1e-4;            ///< particle volume dp^D [m^D]
-  TaitEos eos;                     ///< eq. 4
-  double mu = 0.0;                 ///< dynamic viscosity [Pa s] (Morris term; 0: off)
-  ArtificialViscosity artificial;  ///< Monaghan 1992 (alpha = beta = 0: off)
-  double eta2 = 0.0;               ///< 0.01 h^2, regularisation of 1/r terms
+  double dp = 0.01;                          ///< particle spacing [m]
+  double h = 0.012;                          ///< smoothing length [m]
+  double volume = 1e-4;                      ///< particle volume dp^D [m^D]
+  TaitEos eos;                               ///< eq. 4
+  double mu = 0.0;                           ///< dynamic viscosity [Pa s] (laminar term; 0: off)
+  std::string laminar_viscosity = "morris";  ///< its law (laminar_viscosity.h)
+  ArtificialViscosity artificial;            ///< Monaghan 1992 (alpha = beta = 0: off)
+  double eta2 = 0.0;                         ///< 0.01 h^2, regularisation of 1/r terms
   sph::Vec<D> gravity = sph::Vec<D>::Zero();
   bool no_slip = true;              ///< walls: mirrored velocity in viscous terms; false: excluded
   bool artificial_at_walls = true;  ///< the Monaghan term also at no-slip walls
@@ -44,7 +45,9 @@ struct WaterParams {
   /// (then s_a = 1 wherever lambda_a > 0).
   double drag_share_rate = 0.0;
 
-  bool morris_on() const { return mu > 0.0; }
+  bool laminar_on() const { return mu > 0.0; }
+  /// The law the rates loop compiles in: "" when the laminar term is off.
+  std::string laminar_law() const { return laminar_on() ? laminar_viscosity : std::string(); }
   bool artificial_on() const { return artificial.alpha > 0.0 || artificial.beta > 0.0; }
   bool diffusion_on() const { return density_diffusion > 0.0; }
   bool shifting_on() const { return particle_shifting > 0.0; }
@@ -71,7 +74,8 @@ struct WaterParams {
     p.h = s.h();
     p.volume = std::pow(p.dp, D);
     p.eos = TaitEos(w.rho0, w.sound_speed, w.gamma);
-    p.mu = on("morris_viscosity") ? w.viscosity : 0.0;
+    p.laminar_viscosity = w.laminar_viscosity;
+    p.mu = on(w.laminar_viscosity + "_viscosity") ? w.viscosity : 0.0;
     p.eta2 = 0.01 * p.h * p.h;
     p.artificial = on("artificial_viscosity") ? ArtificialViscosity{w.alpha, w.beta, p.h, 0.0}
                                               : ArtificialViscosity{0.0, 0.0, p.h, 0.0};

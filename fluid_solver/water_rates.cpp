@@ -3,25 +3,27 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 #include "fluid_solver/artificial_viscosity.h"
 #include "fluid_solver/continuity.h"
 #include "fluid_solver/density_diffusion.h"
 #include "fluid_solver/density_diffusion_gradient.h"
 #include "fluid_solver/hydrostatic_difference.h"
+#include "fluid_solver/laminar_viscosity.h"
 #include "fluid_solver/particle_gradient.h"
 #include "fluid_solver/pressure_force.h"
-#include "fluid_solver/viscosity_morris.h"
 #include "sph/kernels.h"
 
 namespace porosph::water {
 namespace {
 
-template <int D, class Kernel, bool kMorris, bool kArtificial, bool kNoSlip, bool kDiffusion>
+template <int D, class Kernel, class Laminar, bool kArtificial, bool kNoSlip, bool kDiffusion>
 RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
                        const WaterParams<D>& prm, WaterParticles<D>& P, ViscousLevel level) {
   using Vec = sph::Vec<D>;
-  constexpr bool kRegularised = kMorris || kArtificial || kDiffusion;  // need 1/(r^2 + eta^2)
+  constexpr bool kLaminar = !std::is_same_v<Laminar, NoLaminarViscosity>;
+  constexpr bool kRegularised = kLaminar || kArtificial || kDiffusion;  // need 1/(r^2 + eta^2)
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
   const Vec* vel = P.velocity.data();
   // The velocities the viscous terms act on: v^n, or v^{n-1} on a Verlet step (viscous_level.h).
@@ -38,7 +40,8 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
   const double* m = P.mass.data();
   const double* cut = P.viscosity_cut.data();     // artificial_viscosity.h: 0 without soil
   const double* scale = P.gradient_scale.data();  // particle_gradient.h: 1 unless "particle"
-  const double mu = prm.mu, eta2 = prm.eta2;
+  const double eta2 = prm.eta2;
+  const LaminarViscosityConstants laminar{prm.mu, prm.eos.rho0()};
   const ArtificialViscosity av = prm.artificial;
   const bool av_at_walls = prm.artificial_at_walls;
   const Vec g = prm.gravity;
@@ -98,9 +101,10 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
               diffusion.pair_term(diffusion_a, diffusion_state[b], volume[b], it->x_ab, factor,
                                   departure_gradient[a], departure_gradient[b]);
         }
-        if constexpr (kMorris) {
-          acc += morris_viscous_acceleration<D>(m[b], mu, mu, inv_rho_a, inv_rho[b], factor,
-                                                Vec(visc_vel[a] - visc_vel[b]));
+        if constexpr (kLaminar) {
+          acc += Laminar::template acceleration<D>(
+              laminar, LaminarPair<D>{m[b], rho_a, rho[b], inv_rho_a, inv_rho[b], factor,
+                                      Vec(visc_vel[a] - visc_vel[b])});
         }
         if constexpr (kArtificial) {
           acc += av.acceleration<D>(m[b], Vec(visc_vel[a] - visc_vel[b]), it->x_ab, inv_r2_eta2,
@@ -130,14 +134,14 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
       } else {
         add_wall_term(pressure_term);
       }
-      if constexpr (kNoSlip && (kMorris || kArtificial)) {
+      if constexpr (kNoSlip && (kLaminar || kArtificial)) {
         const Vec v_ab = visc_vel[a] - wall_v[b];
         const double r2 = it->r * it->r;
         const double inv_r2_eta2 = 1.0 / (r2 + eta2);
-        if constexpr (kMorris) {
+        if constexpr (kLaminar) {
           const double factor = regularised_gradient_factor(grad_factor * r2, inv_r2_eta2);
-          add_wall_term(
-              morris_viscous_acceleration<D>(m[b], mu, mu, inv_rho_a, inv_rho[b], factor, v_ab));
+          add_wall_term(Laminar::template acceleration<D>(
+              laminar, LaminarPair<D>{m[b], rho_a, rho[b], inv_rho_a, inv_rho[b], factor, v_ab}));
         }
         if constexpr (kArtificial) {
           if (av_at_walls)
@@ -169,29 +173,29 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
   return RateSummary{std::sqrt(max_v2), std::sqrt(max_a2)};
 }
 
-template <int D, class Kernel, bool kMorris, bool kArtificial, bool kNoSlip>
+template <int D, class Kernel, class Laminar, bool kArtificial, bool kNoSlip>
 RateSummary dispatch_diffusion(const sph::NeighbourList<D>& nl, const Kernel& k,
                                const WaterParams<D>& prm, WaterParticles<D>& P,
                                ViscousLevel level) {
   if (prm.diffusion_on())
-    return rates_loop<D, Kernel, kMorris, kArtificial, kNoSlip, true>(nl, k, prm, P, level);
-  return rates_loop<D, Kernel, kMorris, kArtificial, kNoSlip, false>(nl, k, prm, P, level);
+    return rates_loop<D, Kernel, Laminar, kArtificial, kNoSlip, true>(nl, k, prm, P, level);
+  return rates_loop<D, Kernel, Laminar, kArtificial, kNoSlip, false>(nl, k, prm, P, level);
 }
 
-template <int D, class Kernel, bool kMorris, bool kArtificial>
+template <int D, class Kernel, class Laminar, bool kArtificial>
 RateSummary dispatch_wall(const sph::NeighbourList<D>& nl, const Kernel& k,
                           const WaterParams<D>& prm, WaterParticles<D>& P, ViscousLevel level) {
   if (prm.no_slip)
-    return dispatch_diffusion<D, Kernel, kMorris, kArtificial, true>(nl, k, prm, P, level);
-  return dispatch_diffusion<D, Kernel, kMorris, kArtificial, false>(nl, k, prm, P, level);
+    return dispatch_diffusion<D, Kernel, Laminar, kArtificial, true>(nl, k, prm, P, level);
+  return dispatch_diffusion<D, Kernel, Laminar, kArtificial, false>(nl, k, prm, P, level);
 }
 
-template <int D, class Kernel, bool kMorris>
+template <int D, class Kernel, class Laminar>
 RateSummary dispatch_artificial(const sph::NeighbourList<D>& nl, const Kernel& k,
                                 const WaterParams<D>& prm, WaterParticles<D>& P,
                                 ViscousLevel level) {
-  if (prm.artificial_on()) return dispatch_wall<D, Kernel, kMorris, true>(nl, k, prm, P, level);
-  return dispatch_wall<D, Kernel, kMorris, false>(nl, k, prm, P, level);
+  if (prm.artificial_on()) return dispatch_wall<D, Kernel, Laminar, true>(nl, k, prm, P, level);
+  return dispatch_wall<D, Kernel, Laminar, false>(nl, k, prm, P, level);
 }
 
 }  // namespace
@@ -229,9 +233,9 @@ RateSummary compute_water_rates(const sph::NeighbourList<D>& neighbours, const K
   } else {  // every entry stays 1: only new particles need a value
     P.gradient_scale.resize(P.n_free, 1.0);
   }
-  if (params.morris_on())
-    return dispatch_artificial<D, Kernel, true>(neighbours, kernel, params, P, level);
-  return dispatch_artificial<D, Kernel, false>(neighbours, kernel, params, P, level);
+  return visit_laminar_viscosity<RateSummary>(params.laminar_law(), [&](auto law) {
+    return dispatch_artificial<D, Kernel, decltype(law)>(neighbours, kernel, params, P, level);
+  });
 }
 
 #define POROSPH_INSTANTIATE(D, KERNEL)                                                            \

@@ -3,12 +3,14 @@
 //   eq. 2   continuity                        continuity.h
 //   eq. 3   pressure gradient                 pressure_force.h    (symmetric; difference form
 //                                                                   with particle shifting)
-//   eq. 3   Morris 1997 laminar viscosity     viscosity_morris.h      (mu > 0)
+//   eq. 3   laminar viscosity (Morris 1997,   laminar_viscosity.h     (mu > 0)
+//           or water.laminar_viscosity's law)
 //           Monaghan 1992 artificial visc.    artificial_viscosity.h  (alpha or beta > 0)
 //   eq. 2+  delta-SPH density diffusion       density_diffusion.h     (delta > 0; water pairs only)
 // plus gravity: dv_a/dt = g + sum_b (...). Wall neighbours enter with their Adami-interpolated
 // pressure and density; in the viscous terms with the mirrored velocity (no-slip) or not at all
-// (free-slip). Terms that are off are compiled out of the pair loop (template flags).
+// (free-slip). Terms that are off are compiled out of the pair loop (template flags; the laminar
+// law a template type).
 #pragma once
 
 #include "fluid_solver/viscous_level.h"

@@ -109,12 +109,13 @@ struct CouplingSettings {
 
 /// Water phase (table [water]).
 struct WaterPhase {
-  double rho0 = 1000.0;            ///< rest density [kg/m^3]
-  double sound_speed = 20.0;       ///< numerical sound speed c in eq. 4 [m/s]
-  double viscosity = 1.0e-3;       ///< dynamic viscosity mu [Pa s] (Morris 1997 term); 0: off
-  double alpha = 0.05;             ///< Monaghan artificial viscosity alpha; 0: off
-  double beta = 0.0;               ///< Monaghan artificial viscosity beta
-  double gamma = 7.0;              ///< Tait exponent of eq. 4
+  double rho0 = 1000.0;                      ///< rest density [kg/m^3]
+  double sound_speed = 20.0;                 ///< numerical sound speed c in eq. 4 [m/s]
+  double viscosity = 1.0e-3;                 ///< dynamic viscosity mu [Pa s] (laminar term); 0: off
+  std::string laminar_viscosity = "morris";  ///< the laminar law (fluid_solver/laminar_viscosity.h)
+  double alpha = 0.05;                       ///< Monaghan artificial viscosity alpha; 0: off
+  double beta = 0.0;                         ///< Monaghan artificial viscosity beta
+  double gamma = 7.0;                        ///< Tait exponent of eq. 4
   int density_filter_every = 0;    ///< Shepard density re-initialisation every N steps; 0: off
   double density_diffusion = 0.1;  ///< delta of the density diffusion term (delta-SPH); 0: off
   std::string density_diffusion_correction = "linear";  ///< "linear" | "hydrostatic"

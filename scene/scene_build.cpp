@@ -94,6 +94,7 @@ Scene build_scene(const toml::table& root) {
     w.rho0 = *(*water)["rho0"].value<double>();
     w.sound_speed = *(*water)["sound_speed"].value<double>();
     w.viscosity = *(*water)["viscosity"].value<double>();
+    w.laminar_viscosity = text_of(*water, "laminar_viscosity");
     w.alpha = *(*water)["alpha"].value<double>();
     w.beta = *(*water)["beta"].value<double>();
     w.gamma = *(*water)["gamma"].value<double>();

@@ -65,6 +65,15 @@ void add_term_keys(SceneSchema& schema) {
       schema.keys.insert(last, key);
     }
   }
+  for (const TermSpec& term : make_term_registry()) {
+    if (!term.choice) continue;
+    const auto key = std::find_if(schema.keys.begin(), schema.keys.end(),
+                                  [&](const KeySpec& k) { return k.path == term.choice->key; });
+    if (key == schema.keys.end() || key->type != ValueType::String)
+      throw std::logic_error("term " + term.name + ": its choice key " + term.choice->key +
+                             " is no string key of a registered term");
+    key->allowed.push_back(term.choice->value);
+  }
 }
 
 std::string term_reference_markdown() {

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,13 @@
 #include "scene/scene_schema.h"
 
 namespace porosph::scene {
+
+/// "This term is one value of a string key" (the laws of a family, e.g. the laminar viscosity
+/// laws of water.laminar_viscosity): the value joins the key's allowed values (add_term_keys).
+struct TermChoice {
+  std::string key;    ///< dotted path of a String key some term owns
+  std::string value;  ///< the value that selects this term
+};
 
 /// One physics term.
 struct TermSpec {
@@ -28,6 +36,7 @@ struct TermSpec {
   std::string runs_when;      ///< the switch in words ("always", "water.viscosity > 0", ...)
   std::vector<KeySpec> keys;  ///< the scene keys the term owns
   std::function<bool(const Scene&)> active;  ///< the switch itself
+  std::optional<TermChoice> choice;          ///< set for one law of a family
 };
 
 /// Every term of every phase, in documentation order.
@@ -51,7 +60,8 @@ class TermSwitches {
   std::vector<std::string> active_;
 };
 
-/// Adds the keys of every registered term to `schema`, each after the last key of its table.
+/// Adds the keys of every registered term to `schema`, each after the last key of its table, and
+/// each term's TermChoice value to its key's allowed values (registry order).
 void add_term_keys(SceneSchema& schema);
 
 /// docs/terms.md: each phase's terms, what switches them and the keys they own.

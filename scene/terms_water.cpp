@@ -29,6 +29,21 @@ TermSpec term(std::string name, std::string summary, std::string runs_when,
 
 bool always(const Scene&) { return true; }
 
+/// One law of the laminar viscosity family: term `<law>_viscosity`, on where water.viscosity > 0
+/// and water.laminar_viscosity = law (its code: fluid_solver/laminar_viscosity.h).
+TermSpec laminar_viscosity_law(const std::string& law, std::string summary,
+                               std::vector<KeySpec> keys = {}) {
+  TermSpec spec = term(
+      law + "_viscosity", std::move(summary),
+      "water.viscosity > 0 and water.laminar_viscosity = \"" + law + "\"",
+      [law](const Scene& s) {
+        return water(s).viscosity > 0.0 && water(s).laminar_viscosity == law;
+      },
+      std::move(keys));
+  spec.choice = TermChoice{"water.laminar_viscosity", law};
+  return spec;
+}
+
 }  // namespace
 
 bool any_periodic(const Scene& s) {
@@ -48,16 +63,23 @@ void add_water_terms(std::vector<TermSpec>& t) {
                    "equation_of_state.h.",
                    "always", always));
   t.push_back(term("gravity", "Body force run.gravity.", "always", always));
-  t.push_back(
-      term("morris_viscosity",
-           "Laminar viscous term of Morris, Fox & Zhu (1997); "
-           "fluid_solver/viscosity_morris.h.",
-           "water.viscosity > 0", [](const Scene& s) { return water(s).viscosity > 0.0; },
-           {Key("water.viscosity", T::Float)
-                .unit("Pa s")
-                .fallback("0.001")
-                .at_least(0)
-                .doc("Dynamic viscosity mu (Morris 1997 laminar term); 0 switches it off.")}));
+  // The laminar viscosity laws (fluid_solver/laminar_viscosity.h): the first owns the keys, each
+  // is one value of water.laminar_viscosity.
+  t.push_back(laminar_viscosity_law(
+      "morris",
+      "Laminar viscous term of Morris, Fox & Zhu (1997), J. Comput. Phys. 136, eq. 8: "
+      "m_b (mu_a + mu_b) / (rho_a rho_b) x_ab.grad W / (r^2 + eta^2) v_ab; "
+      "fluid_solver/laminar_viscosity.h, viscosity_morris.h.",
+      {Key("water.viscosity", T::Float)
+           .unit("Pa s")
+           .fallback("0.001")
+           .at_least(0)
+           .doc("Dynamic viscosity mu of the laminar term (water.laminar_viscosity); 0 switches "
+                "it off."),
+       Key("water.laminar_viscosity", T::String)
+           .fallback("\"morris\"")
+           .doc("The laminar viscosity law (docs/terms.md): \"morris\" (Morris et al. 1997) or "
+                "another registered law.")}));
   t.push_back(term("artificial_viscosity",
                    "Monaghan (1992) artificial viscosity between water particles; "
                    "fluid_solver/artificial_viscosity.h.",

@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <string>
 
+#include "scene/scene_schema.h"
 #include "tests/cases/case_runner.h"
 #include "tools/validation/verification_checks.h"
 
@@ -36,6 +39,27 @@ TEST(VerificationCases, TaylorGreenDecayRateConverges) {
   // ln E stays on a line (an exponential decay, no breakdown): measured 0.019 and 0.0064.
   EXPECT_LT(f.fit_residual, 0.01);
   EXPECT_NEAR(f.energy0, f.energy0_analytic, 1e-3 * f.energy0_analytic);
+}
+
+// Every laminar viscosity law (water.laminar_viscosity, fluid_solver/laminar_viscosity.h) on the
+// Taylor-Green vortex at dp = L/50 (~3 s each): a law that is a consistent discretisation of
+// mu lap v decays the vortex at the rate 2 nu k^2 like the Morris term (measured -2.19 % at this
+// resolution, above). Bound 3 %, the Morris term's at dp 0.02; a law with a wrong factor of 2 or
+// a wrong density weighting would be off by tens of percent.
+TEST(VerificationCases, TaylorGreenDecaysAtTheRateOfEveryLaminarViscosityLaw) {
+  const scene::SceneSchema schema = scene::make_scene_schema();
+  const scene::KeySpec* key = schema.find_key("water.laminar_viscosity");
+  ASSERT_NE(key, nullptr);
+  ASSERT_FALSE(key->allowed.empty());
+  for (const std::string& law : key->allowed) {
+    const auto run =
+        run_case("taylor_green", {"run.dp=0.02", "water.laminar_viscosity=\"" + law + "\""});
+    ASSERT_EQ(run.result.exit_code, 0) << law << ": " << run.result.output;
+    const auto c = validation::check_taylor_green(run.out);
+    EXPECT_LT(std::abs(c.rel_error), 0.03) << law << ": rate " << c.rate_simulated;
+    std::printf("laminar viscosity %s: decay rate error %+.2f %%\n", law.c_str(),
+                100.0 * c.rel_error);
+  }
 }
 
 // Elastic column loaded suddenly by gravity at dp = 0.02 m for 3 periods (~3 s). Measured (full
