@@ -52,8 +52,19 @@ struct MorrisViscosity {
   }
 };
 
+/// Lo & Shao (2002), Appl. Ocean Res. 24, 275-286 (the laminar term of DualSPHysics):
+///   (dv_a/dt) = sum_b m_b 4 nu0 / (rho_a + rho_b) F_ab v_ab,  nu0 = mu / rho0.
+/// Equal to Morris's where rho_a = rho_b = rho0; the pair's density enters as its mean.
+struct LoShaoViscosity {
+  static constexpr const char* kName = "lo_shao";
+  template <int D>
+  static sph::Vec<D> acceleration(const LaminarViscosityConstants& c, const LaminarPair<D>& p) {
+    return (p.m_b * 4.0 * (c.mu / c.rho0) / (p.rho_a + p.rho_b) * p.factor) * p.v_ab;
+  }
+};
+
 /// The registered laws, in the order of scene/terms_water.cpp.
-using LaminarViscosityLaws = std::tuple<MorrisViscosity>;
+using LaminarViscosityLaws = std::tuple<MorrisViscosity, LoShaoViscosity>;
 
 /// The names of LaminarViscosityLaws (for the registry's consistency test).
 inline std::vector<std::string> laminar_viscosity_law_names() {

@@ -80,6 +80,11 @@ void add_water_terms(std::vector<TermSpec>& t) {
            .fallback("\"morris\"")
            .doc("The laminar viscosity law (docs/terms.md): \"morris\" (Morris et al. 1997) or "
                 "another registered law.")}));
+  t.push_back(laminar_viscosity_law(
+      "lo_shao",
+      "Laminar viscous term of Lo & Shao (2002), Appl. Ocean Res. 24, 275-286: m_b 4 nu0 / "
+      "(rho_a + rho_b) x_ab.grad W / (r^2 + eta^2) v_ab, nu0 = mu / rho0 (DualSPHysics' "
+      "laminar term); fluid_solver/laminar_viscosity.h."));
   t.push_back(term("artificial_viscosity",
                    "Monaghan (1992) artificial viscosity between water particles; "
                    "fluid_solver/artificial_viscosity.h.",

@@ -71,5 +71,20 @@ TEST(LaminarViscosity, EveryLawOpposesTheRelativeVelocityAndConservesMomentum) {
       LaminarViscosityLaws{});
 }
 
+// Lo & Shao (2002) by hand: m_b 4 (mu / rho0) / (rho_a + rho_b) F = 0.13 * 4e-6 / 2000 * -2.5e7
+// = -6.5e-3 1/s, times v_ab = (0.3, -0.2) m/s. Against Morris's m_b 2 mu / (rho_a rho_b) F its
+// ratio is 2 rho_a rho_b / (rho0 (rho_a + rho_b)) = 0.999984: the two agree to the pair's
+// density variation squared.
+TEST(LaminarViscosity, LoShaoByHand) {
+  const LaminarViscosityConstants water{1e-3, 1000.0};
+  const LaminarPair<2> pair{0.13,        1004.0, 996.0,          1.0 / 1004.0,
+                            1.0 / 996.0, -2.5e7, Vec2(0.3, -0.2)};
+  const Vec2 a = LoShaoViscosity::acceleration<2>(water, pair);
+  EXPECT_NEAR(a.x(), -1.95e-3, 1e-15);
+  EXPECT_NEAR(a.y(), 1.3e-3, 1e-15);
+  const Vec2 morris = MorrisViscosity::acceleration<2>(water, pair);
+  EXPECT_NEAR(a.x() / morris.x(), 0.999984, 1e-12);
+}
+
 }  // namespace
 }  // namespace porosph::water
