@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "io/snapshot_writer.h"
+#include "sph/particle_fields.h"
 #include "sph/vector.h"
 
 namespace porosph::water {
@@ -47,15 +48,8 @@ class PoreFields {
   void append_fields(std::vector<io::FieldView>& fields, const std::vector<Vec>& velocity) {
     if (!active_) return;
     if (porosity_.size() != velocity.size()) update({}, {}, velocity);
-    fields.push_back(io::field_view("porosity", porosity_));
-    io::FieldView pore;
-    pore.name = "pore_velocity";
-    pore.rows = pore_velocity_.size();
-    pore.cols = D;
-    pore.f64 = pore_velocity_.empty() ? nullptr : pore_velocity_[0].data();
-    pore.type = io::FieldType::F64;
-    pore.unit = "m/s";
-    fields.push_back(pore);
+    fields.push_back(sph::scalar_field("porosity", porosity_));
+    fields.push_back(sph::packed_field("pore_velocity", pore_velocity_, "m/s"));
   }
 
   const std::vector<double>& porosity() const { return porosity_; }

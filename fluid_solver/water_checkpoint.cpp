@@ -12,22 +12,10 @@ namespace porosph::water {
 template <int D>
 void WaterSolver<D>::write_checkpoint(io::CheckpointWriter& out) {
   sph::write_particle_arrays(out, particles_);
-  out.set("dimension", static_cast<std::int64_t>(D));
-  out.set("time", time_);
-  // The dt limits of the latest rates: the state after a checkpoint is reported before its own
-  // rates are computed (proto/solver_runtime.h), with these limits.
-  out.set("dt_cfl", limits_.cfl);
-  out.set("dt_viscous", limits_.viscous);
-  out.set("dt_force", limits_.force);
-  out.set("neighbours_per_particle", neighbours_per_particle_);
-  out.set("step", static_cast<std::int64_t>(step_));
-  out.set("removed_count", static_cast<std::int64_t>(removed_count_));
+  scalars_.write(out, D);
   out.set("born_count", static_cast<std::int64_t>(born_count_));
   out.set("inflow_mass", inflow_mass_);
-  out.set("outflow_mass", outflow_mass_);
   out.set("next_id", next_id_);
-  out.set("interaction_nonzero", static_cast<std::int64_t>(interaction_nonzero_));
-  out.set("next_wall_removal", next_wall_removal_);
   out.set("damping_released", static_cast<std::int64_t>(damping_.released()));
   out.set("physics_seconds", physics_seconds_);
   out.set("dt_previous", dt_previous_);
@@ -37,27 +25,15 @@ void WaterSolver<D>::write_checkpoint(io::CheckpointWriter& out) {
 template <int D>
 void WaterSolver<D>::restore_checkpoint(const io::CheckpointReader& in) {
   neighbours_.invalidate();
-  if (in.get_i64("dimension") != D) {
-    throw std::runtime_error(in.path() + ": a checkpoint of a run in another dimension");
-  }
+  scalars_.read(in, D);  // first: throws for another dimension before anything else changes
   sph::read_particle_arrays(in, particles_);
-  time_ = in.get_f64("time");
-  limits_.cfl = in.get_f64("dt_cfl");
-  limits_.viscous = in.get_f64("dt_viscous");
-  limits_.force = in.get_f64("dt_force");
-  neighbours_per_particle_ = in.get_f64("neighbours_per_particle");
-  step_ = static_cast<std::uint64_t>(in.get_i64("step"));
-  removed_count_ = static_cast<std::uint64_t>(in.get_i64("removed_count"));
   born_count_ = static_cast<std::uint64_t>(in.get_i64("born_count"));
   inflow_mass_ = in.get_f64("inflow_mass");
-  outflow_mass_ = in.get_f64("outflow_mass");
   next_id_ = in.get_i64("next_id");
-  interaction_nonzero_ = in.get_i64("interaction_nonzero") != 0;
   interaction_fresh_ = false;  // a checkpoint is taken after advance()
   viscosity_cut_nonzero_ =
       std::any_of(particles_.viscosity_cut.begin(), particles_.viscosity_cut.end(),
                   [](double cut) { return cut > 0.0; });
-  next_wall_removal_ = in.get_f64("next_wall_removal");
   dt_previous_ = in.get_f64("dt_previous");
   damping_.set_released(in.get_i64("damping_released") != 0);
   physics_seconds_ = in.get_f64("physics_seconds");

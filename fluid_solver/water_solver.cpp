@@ -38,8 +38,8 @@ class StopWatch {
 
 template <int D>
 WaterSolver<D>::WaterSolver(const scene::Scene& s)
-    : params_(WaterParams<D>::from_scene(s)),
-      terms_(scene::active_terms(s, "water")),
+    : Core(scene::active_terms(s, "water")),
+      params_(WaterParams<D>::from_scene(s)),
       box_(sph::DomainBox<D>::from_scene(s, 2.0 * params_.h)),
       kernel_(s.run.kernel, params_.h, s.run.dp, s.run.kernel_gradient != "plain"),
       damping_(DampingStage::from_scene(s)),
@@ -54,7 +54,7 @@ WaterSolver<D>::WaterSolver(const scene::Scene& s)
 
   InitialParticles<D> initial = initial_particles<D>(s, params_, box_, zones_, open_);
   particles_ = std::move(initial.particles);
-  next_wall_removal_ = initial.next_wall_removal;
+  scalars_.next_wall_removal = initial.next_wall_removal;
   next_id_ = static_cast<std::int64_t>(particles_.size());
   if (reservoirs_.count() > 0)  // room for a few refills before the arrays must grow
     particles_.reserve(particles_.position.capacity() + 4 * reservoirs_.column_count());
@@ -64,8 +64,8 @@ WaterSolver<D>::WaterSolver(const scene::Scene& s)
 template <int D>
 void WaterSolver<D>::compute_rates() {
   StopWatch watch(physics_seconds_);
-  cell_order_.refresh(neighbours_, particles_, box_, step_, overlap_index_);
-  neighbours_per_particle_ = neighbours_.neighbours_per_free_particle();
+  cell_order_.refresh(neighbours_, particles_, box_, scalars_.step, overlap_index_);
+  scalars_.neighbours_per_particle = neighbours_.neighbours_per_free_particle();
   kernel_.visit([this](const auto& kernel) { compute_rates_with(kernel); });
 }
 
@@ -87,9 +87,9 @@ void WaterSolver<D>::compute_rates_with(const Kernel& kernel) {
   if (params_.shifting_on()) {
     shifting_.compute(neighbours_, kernel, params_.dp, r.max_speed, particles_);
   }
-  limits_ = sph::time_step_limits(params_.h, params_.eos.c0(), r.max_speed,
-                                  params_.mu / params_.eos.rho0(), r.max_total_acceleration,
-                                  params_.cfl, params_.viscous_coefficient, params_.c_a);
+  scalars_.limits = sph::time_step_limits(params_.h, params_.eos.c0(), r.max_speed,
+                                          params_.mu / params_.eos.rho0(), r.max_total_acceleration,
+                                          params_.cfl, params_.viscous_coefficient, params_.c_a);
 }
 
 template <int D>
@@ -111,8 +111,8 @@ void WaterSolver<D>::fill_state(coupling::StepState& out, const std::vector<doub
   StopWatch watch(physics_seconds_);
   const WaterParticles<D>& P = particles_;
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
-  out.step = step_;
-  out.time = time_;
+  out.step = scalars_.step;
+  out.time = scalars_.time;
 
   // Overlap set.
   overlap_index_.clear();
@@ -150,20 +150,20 @@ void WaterSolver<D>::fill_state(coupling::StepState& out, const std::vector<doub
   coupling::Diagnostics& d = out.diagnostics;
   d.particle_count = P.size();
   d.free_count = P.n_free;
-  d.removed_count = removed_count_;
+  d.removed_count = scalars_.removed_count;
   d.inflow_mass = inflow_mass_;
-  d.neighbours_per_particle = neighbours_per_particle_;
-  d.outflow_mass = outflow_mass_;
+  d.neighbours_per_particle = scalars_.neighbours_per_particle;
+  d.outflow_mass = scalars_.outflow_mass;
   d.mass = t.mass;
   d.kinetic_energy = t.kinetic_energy;
   d.max_speed = t.max_speed;
   // The state is reported before its rates are computed (solver_runtime.h): the CFL limit of the
   // current speeds, eq. 21 and the viscous limit of the latest rates.
-  limits_.cfl = sph::cfl_limit(params_.cfl, params_.h, params_.eos.c0(), d.max_speed);
-  out.dt_cfl = limits_.cfl;
-  out.dt_viscous = limits_.viscous;
-  out.dt_force = limits_.force;
-  out.dt_limit = limits_.min();
+  scalars_.limits.cfl = sph::cfl_limit(params_.cfl, params_.h, params_.eos.c0(), d.max_speed);
+  out.dt_cfl = scalars_.limits.cfl;
+  out.dt_viscous = scalars_.limits.viscous;
+  out.dt_force = scalars_.limits.force;
+  out.dt_limit = scalars_.limits.min();
   d.momentum.assign(t.momentum, t.momentum + D);
   book_.flatten(d.external_impulse);  // what the last advance did (water_impulse_book.h)
   const sph::ParticleView<D> view{P.position.data(), P.velocity.data(), P.mass.data(),
@@ -185,7 +185,7 @@ void WaterSolver<D>::add_interaction(const std::vector<double>& acceleration) {
       particles_.interaction[overlap_index_[i]][k] = acceleration[i * D + k];
   }
   interaction_fresh_ = true;
-  interaction_nonzero_ = true;
+  scalars_.interaction_nonzero = true;
 }
 
 template <int D>
@@ -209,30 +209,32 @@ template <int D>
 void WaterSolver<D>::advance(double dt) {
   StopWatch watch(physics_seconds_);
   WaterParticles<D>& P = particles_;
-  if (!interaction_fresh_ && interaction_nonzero_) {  // none this step, nor in next step's eq. 21
+  if (!interaction_fresh_ &&
+      scalars_.interaction_nonzero) {  // none this step, nor in next step's eq. 21
     std::fill(P.interaction.begin(), P.interaction.end(), sph::Vec<D>::Zero());
-    interaction_nonzero_ = false;
+    scalars_.interaction_nonzero = false;
   }
   interaction_fresh_ = false;
   book_.clear();
-  if (!damping_.frozen(time_)) integrate(dt);  // else the water waits (damping_stage.h)
+  if (!damping_.frozen(scalars_.time)) integrate(dt);  // else the water waits (damping_stage.h)
   moving_walls_.move(particles_, dt);
-  time_ += dt;
-  ++step_;
+  scalars_.time += dt;
+  ++scalars_.step;
   remove_expired_walls();
 }
 
 template <int D>
 bool WaterSolver<D>::density_filter_due() const {
   const int every = params_.density_filter_every;
-  return every > 0 && step_ > 0 && step_ % static_cast<std::uint64_t>(every) == 0 &&
-         !damping_.frozen(time_);
+  return every > 0 && scalars_.step > 0 && scalars_.step % static_cast<std::uint64_t>(every) == 0 &&
+         !damping_.frozen(scalars_.time);
 }
 
 template <int D>
 bool WaterSolver<D>::next_step_is_euler() const {
-  const bool release = damping_.duration() > 0.0 && !damping_.released() && !damping_.frozen(time_);
-  return sph::is_euler_step(step_, params_.euler_every) || density_filter_due() || release;
+  const bool release =
+      damping_.duration() > 0.0 && !damping_.released() && !damping_.frozen(scalars_.time);
+  return sph::is_euler_step(scalars_.step, params_.euler_every) || density_filter_due() || release;
 }
 
 template <int D>
@@ -244,14 +246,15 @@ void WaterSolver<D>::integrate(double dt) {
   // reported velocity over to the other chain. Decided before release() marks the stage over.
   const bool dt_jump = std::abs(dt - dt_previous_) > 0.01 * dt_previous_;
   const bool euler = next_step_is_euler() || dt_jump;
-  if (damping_.release(time_)) {  // end of the damping stage: every water velocity zeroed once
+  if (damping_.release(
+          scalars_.time)) {  // end of the damping stage: every water velocity zeroed once
     book_[kWaterDamping] -= momentum_of(P, 0, P.n_free);
     std::fill(P.velocity.begin(), P.velocity.begin() + n, sph::Vec<D>::Zero());
     std::fill(P.velocity_previous.begin(), P.velocity_previous.begin() + n, sph::Vec<D>::Zero());
   }
-  const std::uint64_t born_before = born_count_, removed_before = removed_count_;
-  zones_.begin_step(time_, dt);
-  open_.begin_step(P, time_);
+  const std::uint64_t born_before = born_count_, removed_before = scalars_.removed_count;
+  zones_.begin_step(scalars_.time, dt);
+  open_.begin_step(P, scalars_.time);
   book_water_integration(P, params_.gravity, dt, dt_previous_, euler, zones_, open_, book_);
   std::int64_t past_zone = 0;  // zone particles past their downstream face
   const bool shifting = params_.shifting_on() && shifting_.concentration.size() == P.n_free;
@@ -281,11 +284,13 @@ void WaterSolver<D>::integrate(double dt) {
   remove_leaving_particles();
   open_.capture_and_impose(P);
   free_before = P.n_free;
-  if (reservoirs_.count() > 0) born_count_ += reservoirs_.refill(P, time_, next_id_, inflow_mass_);
+  if (reservoirs_.count() > 0)
+    born_count_ += reservoirs_.refill(P, scalars_.time, next_id_, inflow_mass_);
   book_[kWaterReservoir] += momentum_of(P, free_before, P.n_free);
   // Births and removals shift the indices: a new search even where they leave the count as it was
   // (the list would otherwise survive as long as no particle moved more than half the skin).
-  if (born_count_ != born_before || removed_count_ != removed_before) neighbours_.invalidate();
+  if (born_count_ != born_before || scalars_.removed_count != removed_before)
+    neighbours_.invalidate();
 }
 
 template <int D>
@@ -293,9 +298,9 @@ bool WaterSolver<D>::leaves(std::size_t a) const {
   const WaterParticles<D>& P = particles_;
   if (box_.outside(P.position[a])) return true;
   if (open_.owns(P.zone[a])) return open_.past_far_face(P.zone[a], P.position[a]);
-  return P.zone[a] < 0 &&
-         (zones_.in_outflow(P.position[a], time_) ||
-          reservoirs_.above_level(P.position[a], time_) || open_.above_level(P.position[a]));
+  return P.zone[a] < 0 && (zones_.in_outflow(P.position[a], scalars_.time) ||
+                           reservoirs_.above_level(P.position[a], scalars_.time) ||
+                           open_.above_level(P.position[a]));
 }
 
 template <int D>
@@ -303,18 +308,20 @@ void WaterSolver<D>::remove_leaving_particles() {
   const WaterParticles<D>& P = particles_;
   const auto leaving = [this](std::size_t a) { return leaves(a); };
   const auto removing = [this, &P](std::size_t a) {  // its momentum leaves with it
-    const bool outflow = box_.outside(P.position[a]) || zones_.in_outflow(P.position[a], time_) ||
-                         open_.owns(P.zone[a]) || open_.above_level(P.position[a]);
+    const bool outflow = box_.outside(P.position[a]) ||
+                         zones_.in_outflow(P.position[a], scalars_.time) || open_.owns(P.zone[a]) ||
+                         open_.above_level(P.position[a]);
     book_[outflow ? kWaterOutflow : kWaterReservoir] -= P.mass[a] * P.velocity[a];
   };
-  removed_count_ +=
-      sph::remove_free_particles(particles_, leaving, keep_scratch_, outflow_mass_, removing);
+  scalars_.removed_count += sph::remove_free_particles(particles_, leaving, keep_scratch_,
+                                                       scalars_.outflow_mass, removing);
 }
 
 template <int D>
 void WaterSolver<D>::remove_expired_walls() {
-  if (next_wall_removal_ < 0.0 || time_ < next_wall_removal_) return;
-  next_wall_removal_ = sph::remove_expired_fixed_particles(particles_, time_, keep_scratch_);
+  if (scalars_.next_wall_removal < 0.0 || scalars_.time < scalars_.next_wall_removal) return;
+  scalars_.next_wall_removal =
+      sph::remove_expired_fixed_particles(particles_, scalars_.time, keep_scratch_);
 }
 
 template class WaterSolver<2>;

@@ -30,12 +30,15 @@
 #include "sph/kernels.h"
 #include "sph/neighbour_list.h"
 #include "sph/observables.h"
+#include "sph/particle_solver_core.h"
 #include "sph/time_step_limits.h"
 
 namespace porosph::water {
 
 template <int D>
-class WaterSolver {
+class WaterSolver : public sph::ParticleSolverCore<D, WaterParticles<D>> {
+  using Core = sph::ParticleSolverCore<D, WaterParticles<D>>;
+
  public:
   /// Particles from scene.water.blocks, the inflow zones and the walls acting on water
   /// (initial_particles.h); masses m = rho(t=0) dp^D. Throws std::invalid_argument on a bad scene.
@@ -44,8 +47,6 @@ class WaterSolver {
   /// Neighbour search + wall state + all internal accelerations and drho/dt (+ density filter on
   /// its steps).
   void compute_rates();
-  /// Time-step limits of the state of the last compute_rates().
-  sph::DtLimits dt_limits() const { return limits_; }
 
   /// Diagnostics of the water particles and the overlap set: the water particles inside
   /// [overlap_min, overlap_max] (empty vectors: no overlap particles). Reuses out's vectors.
@@ -83,10 +84,6 @@ class WaterSolver {
   /// walls, and in scenes with soil porosity and pore_velocity (set_porosity); the views stay
   /// valid until the next compute_rates/advance.
   std::vector<io::FieldView> snapshot_fields() const;
-  /// The physics terms this solver evaluates for its scene (run.json phases.water.terms): the
-  /// same predicates that select the compiled pair loop (water_rates.cpp) and the optional stages.
-  /// The terms the registry switches on for the scene (scene/term_registry.h).
-  const std::vector<std::string>& active_terms() const { return terms_; }
   /// The sources of the external impulses reported with each state (water_impulse_book.h).
   std::vector<std::string> impulse_sources() const { return water_impulse_sources(); }
   /// The external impulses of the last advance() (zero before the first), by source.
@@ -100,24 +97,22 @@ class WaterSolver {
   /// run then continues exactly as the one that wrote it. Throws std::runtime_error on a mismatch.
   void restore_checkpoint(const io::CheckpointReader& in);
 
-  double time() const { return time_; }
-  std::uint64_t step() const { return step_; }
-  std::size_t particle_count() const { return particles_.size(); }
-  std::size_t free_count() const { return particles_.n_free; }
-  std::uint64_t removed_count() const { return removed_count_; }
   /// Water particles created by the inflow zones and the reservoirs so far.
   std::uint64_t born_count() const { return born_count_; }
 
   // Read access for tests and tools.
-  const WaterParticles<D>& particles() const { return particles_; }
   const WaterParams<D>& params() const { return params_; }
-  const sph::NeighbourList<D>& neighbours() const { return neighbours_; }
   const FlowZones<D>& flow_zones() const { return zones_; }
   const Reservoirs<D>& reservoirs() const { return reservoirs_; }
   const OpenReservoirs<D>& open_reservoirs() const { return open_; }
   const DampingStage& damping_stage() const { return damping_; }
 
  private:
+  using Core::neighbours_;
+  using Core::particles_;
+  using Core::scalars_;
+  using Core::terms_;
+
   template <class Kernel>
   void compute_rates_with(const Kernel& kernel);
   void integrate(double dt);
@@ -134,7 +129,6 @@ class WaterSolver {
   double evaluate(const sph::PreparedObservable<D>& o, const sph::ParticleView<D>& view) const;
 
   WaterParams<D> params_;
-  std::vector<std::string> terms_;
   sph::DomainBox<D> box_;
   sph::KernelChoice<D> kernel_;  ///< run.kernel: the one dispatch to the compiled loops
   DampingStage damping_;
@@ -144,23 +138,13 @@ class WaterSolver {
   MovingWalls<D> moving_walls_;  ///< [[walls]] with moves_with
   std::vector<sph::PreparedObservable<D>> observables_;
 
-  WaterParticles<D> particles_;
-  sph::NeighbourList<D> neighbours_;
   sph::CellOrder<D> cell_order_{neighbours_, params_.h};  ///< search, re-sort by cell
-  sph::DtLimits limits_;
-  double time_ = 0.0;
-  std::uint64_t step_ = 0;
-  std::uint64_t removed_count_ = 0;
-  double neighbours_per_particle_ = 0.0;  ///< of the latest neighbour list (free particles)
   std::uint64_t born_count_ = 0;
-  double inflow_mass_ = 0.0;   ///< mass of the particles born in inflow zones / reservoirs [kg]
-  double outflow_mass_ = 0.0;  ///< mass of the particles removed so far [kg]
-  std::int64_t next_id_ = 0;   ///< id of the next particle born in an inflow zone
-  double dt_previous_ = 0.0;   ///< the last step's dt: the Verlet span is dt_previous + dt
+  double inflow_mass_ = 0.0;  ///< mass of the particles born in inflow zones / reservoirs [kg]
+  std::int64_t next_id_ = 0;  ///< id of the next particle born in an inflow zone
+  double dt_previous_ = 0.0;  ///< the last step's dt: the Verlet span is dt_previous + dt
   bool interaction_fresh_ = false;      ///< add_interaction called since the last advance
-  bool interaction_nonzero_ = false;    ///< particles_.interaction may hold non-zero values
   bool viscosity_cut_nonzero_ = false;  ///< particles_.viscosity_cut may hold non-zero values
-  double next_wall_removal_ = -1.0;     ///< earliest pending wall removal time (< 0: none)
   double physics_seconds_ = 0.0;
   WaterImpulseBook<D> book_;  ///< of the last advance() (checkpointed)
 

@@ -6,6 +6,7 @@
 #include "fluid_solver/water_solver.h"
 #include "sph/mach_watch.h"
 #include "sph/non_finite_report.h"
+#include "sph/particle_fields.h"
 
 namespace porosph::water {
 
@@ -19,7 +20,7 @@ std::optional<std::string> WaterSolver<D>::find_non_finite(std::int64_t* particl
                       sph::all_finite(P.density.data(), P.size()))) {
     // A finite state may still leave the weakly compressible model (sph/mach_watch.h).
     return sph::find_mach_violation<D>(P.position, P.velocity, P.fixed, P.id, params_.eos.c0(),
-                                       step_, time_, particle_id);
+                                       scalars_.step, scalars_.time, particle_id);
   }
   std::int64_t first = n;
 #pragma omp parallel for schedule(static) reduction(min : first)
@@ -33,42 +34,21 @@ std::optional<std::string> WaterSolver<D>::find_non_finite(std::int64_t* particl
                                                       : "density";
   if (particle_id != nullptr) *particle_id = P.id[first];
   return sph::non_finite_message<D>(what, P.fixed[first] ? "wall" : "water", P.id[first],
-                                    P.position[first], P.velocity[first], P.density[first], step_,
-                                    time_);
+                                    P.position[first], P.velocity[first], P.density[first],
+                                    scalars_.step, scalars_.time);
 }
 
 template <int D>
 std::vector<io::FieldView> WaterSolver<D>::snapshot_fields() const {
   const WaterParticles<D>& P = particles_;
-  const std::size_t n = P.size();
-  auto f64 = [n](const char* name, std::size_t cols, const double* data, const char* unit) {
-    io::FieldView f;
-    f.name = name;
-    f.unit = unit;
-    f.rows = n;
-    f.cols = cols;
-    f.f64 = data;
-    f.type = io::FieldType::F64;
-    return f;
-  };
-  std::vector<io::FieldView> fields;
-  fields.push_back(f64("position", D, n ? P.position[0].data() : nullptr, "m"));
-  fields.push_back(f64("velocity", D, n ? P.velocity[0].data() : nullptr, "m/s"));
-  fields.push_back(f64("density", 1, P.density.data(), "kg/m^3"));
-  fields.push_back(f64("pressure", 1, P.pressure.data(), "Pa"));
-  fields.push_back(f64("mass", 1, P.mass.data(), "kg"));  // varies: rho(t = 0) dp^D
-  io::FieldView id;
-  id.name = "id";
-  id.rows = n;
-  id.i64 = P.id.data();
-  id.type = io::FieldType::I64;
-  fields.push_back(id);
-  io::FieldView fixed;
-  fixed.name = "fixed";
-  fixed.rows = n;
-  fixed.u8 = P.fixed.data();
-  fixed.type = io::FieldType::U8;
-  fields.push_back(fixed);
+  std::vector<io::FieldView> fields = {
+      sph::packed_field("position", P.position, "m"),
+      sph::packed_field("velocity", P.velocity, "m/s"),
+      sph::scalar_field("density", P.density, "kg/m^3"),
+      sph::scalar_field("pressure", P.pressure, "Pa"),
+      sph::scalar_field("mass", P.mass, "kg"),  // varies: rho(t = 0) dp^D
+      sph::scalar_field("id", P.id),
+      sph::scalar_field("fixed", P.fixed)};
   pore_fields_.append_fields(fields, P.velocity);  // scenes with soil: porosity, pore_velocity
   return fields;
 }

@@ -11,44 +11,20 @@ namespace porosph::soil {
 template <int D>
 void SoilSolver<D>::write_checkpoint(io::CheckpointWriter& out) {
   sph::write_particle_arrays(out, particles_);
-  out.set("dimension", static_cast<std::int64_t>(D));
-  out.set("time", time_);
-  // The dt limits of the latest rates: the state after a checkpoint is reported before its own
-  // rates are computed (proto/solver_runtime.h), with these limits.
-  out.set("dt_cfl", limits_.cfl);
-  out.set("dt_viscous", limits_.viscous);
-  out.set("dt_force", limits_.force);
-  out.set("neighbours_per_particle", neighbours_per_particle_);
-  out.set("step", static_cast<std::int64_t>(step_));
-  out.set("removed_count", static_cast<std::int64_t>(removed_count_));
-  out.set("outflow_mass", outflow_mass_);
+  scalars_.write(out, D);
   out.set("damping_released", static_cast<std::int64_t>(damping_released_));
-  out.set("interaction_nonzero", static_cast<std::int64_t>(interaction_nonzero_));
   out.set("saturation_set", static_cast<std::int64_t>(saturation_set_));
-  out.set("next_wall_removal", next_wall_removal_);
   book_.write(out);  // the next state reports the step before the checkpoint
 }
 
 template <int D>
 void SoilSolver<D>::restore_checkpoint(const io::CheckpointReader& in) {
   neighbours_.invalidate();
-  if (in.get_i64("dimension") != D) {
-    throw std::runtime_error(in.path() + ": a checkpoint of a run in another dimension");
-  }
+  scalars_.read(in, D);  // first: throws for another dimension before anything else changes
   sph::read_particle_arrays(in, particles_);
-  time_ = in.get_f64("time");
-  limits_.cfl = in.get_f64("dt_cfl");
-  limits_.viscous = in.get_f64("dt_viscous");
-  limits_.force = in.get_f64("dt_force");
-  neighbours_per_particle_ = in.get_f64("neighbours_per_particle");
-  step_ = static_cast<std::uint64_t>(in.get_i64("step"));
-  removed_count_ = static_cast<std::uint64_t>(in.get_i64("removed_count"));
-  outflow_mass_ = in.get_f64("outflow_mass");
   damping_released_ = in.get_i64("damping_released") != 0;
-  interaction_nonzero_ = in.get_i64("interaction_nonzero") != 0;
   interaction_fresh_ = false;  // a checkpoint is taken after advance()
   saturation_set_ = in.get_i64("saturation_set") != 0;
-  next_wall_removal_ = in.get_f64("next_wall_removal");
   book_.read(in);
 }
 

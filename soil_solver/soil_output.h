@@ -15,6 +15,7 @@
 #include "soil_solver/soil_particles.h"
 #include "sph/free_particle_totals.h"
 #include "sph/non_finite_report.h"
+#include "sph/particle_fields.h"
 
 namespace porosph::soil {
 
@@ -110,44 +111,15 @@ std::optional<std::string> find_non_finite_soil(const SoilParticles<D>& P, std::
 /// Views of the soil.h5 fields of every particle (fixed ones included).
 template <int D>
 std::vector<io::FieldView> soil_snapshot_fields(const SoilParticles<D>& P) {
-  const std::size_t n = P.size();
-  auto f64 = [n](const char* name, std::size_t cols, const double* data, const char* unit = "") {
-    io::FieldView f;
-    f.name = name;
-    f.unit = unit;
-    f.rows = n;
-    f.cols = cols;
-    f.f64 = data;
-    f.type = io::FieldType::F64;
-    return f;
-  };
-  auto i64 = [n](const char* name, const std::int64_t* data) {
-    io::FieldView f;
-    f.name = name;
-    f.rows = n;
-    f.i64 = data;
-    f.type = io::FieldType::I64;
-    return f;
-  };
-  std::vector<io::FieldView> fields;
-  fields.push_back(f64("position", D, n ? P.position[0].data() : nullptr, "m"));
-  fields.push_back(f64("velocity", D, n ? P.velocity[0].data() : nullptr, "m/s"));
-  fields.push_back(f64("density", 1, P.density.data(), "kg/m^3"));
-  // A symmetric 3x3 matrix: its column-major storage equals the row-major layout.
-  fields.push_back(f64("stress", 9, n ? P.stress[0].data() : nullptr, "Pa"));
-  fields.push_back(f64("porosity", 1, P.porosity.data()));
-  fields.push_back(f64("plastic_strain", 1, P.plastic_strain.data()));
-  fields.push_back(f64("displacement", D, n ? P.displacement[0].data() : nullptr, "m"));
-  fields.push_back(f64("saturation", 1, P.saturation.data()));
-  fields.push_back(i64("id", P.id.data()));
-  fields.push_back(i64("material", P.material.data()));
-  io::FieldView fixed;
-  fixed.name = "fixed";
-  fixed.rows = n;
-  fixed.u8 = P.fixed.data();
-  fixed.type = io::FieldType::U8;
-  fields.push_back(fixed);
-  return fields;
+  return {sph::packed_field("position", P.position, "m"),
+          sph::packed_field("velocity", P.velocity, "m/s"),
+          sph::scalar_field("density", P.density, "kg/m^3"),
+          // A symmetric 3x3 matrix: its column-major storage equals the row-major layout.
+          sph::packed_field("stress", P.stress, "Pa"), sph::scalar_field("porosity", P.porosity),
+          sph::scalar_field("plastic_strain", P.plastic_strain),
+          sph::packed_field("displacement", P.displacement, "m"),
+          sph::scalar_field("saturation", P.saturation), sph::scalar_field("id", P.id),
+          sph::scalar_field("material", P.material), sph::scalar_field("fixed", P.fixed)};
 }
 
 }  // namespace porosph::soil

@@ -26,8 +26,8 @@ namespace {
 
 template <int D>
 SoilSolver<D>::SoilSolver(const scene::Scene& s)
-    : params_(SoilParams<D>::from_scene(s)),
-      terms_(scene::active_terms(s, "soil")),
+    : Core(scene::active_terms(s, "soil")),
+      params_(SoilParams<D>::from_scene(s)),
       box_(sph::DomainBox<D>::from_scene(s, 2.0 * params_.h)),
       kernel_(s.run.kernel, params_.h, s.run.dp, s.run.kernel_gradient != "plain"),
       loads_(*s.soil) {
@@ -76,8 +76,8 @@ SoilSolver<D>::SoilSolver(const scene::Scene& s)
       const Vec normal = wall_normal_from_geometry<D>(x, walls, dp, wall_reach);
       fixed.push_back({x, -1, wall.remove_at, no_slip, normal});
       if (wall.remove_at >= 0.0 &&
-          (next_wall_removal_ < 0.0 || wall.remove_at < next_wall_removal_))
-        next_wall_removal_ = wall.remove_at;
+          (scalars_.next_wall_removal < 0.0 || wall.remove_at < scalars_.next_wall_removal))
+        scalars_.next_wall_removal = wall.remove_at;
     }
   }
   SoilParticles<D>& P = particles_;
@@ -116,8 +116,8 @@ SoilSolver<D>::SoilSolver(const scene::Scene& s)
 
 template <int D>
 void SoilSolver<D>::compute_rates() {
-  cell_order_.refresh(neighbours_, particles_, box_, step_, overlap_index_);
-  neighbours_per_particle_ = neighbours_.neighbours_per_free_particle();
+  cell_order_.refresh(neighbours_, particles_, box_, scalars_.step, overlap_index_);
+  scalars_.neighbours_per_particle = neighbours_.neighbours_per_free_particle();
   kernel_.visit([this](const auto& kernel) { compute_rates_with(kernel); });
 }
 
@@ -125,19 +125,19 @@ template <int D>
 template <class Kernel>
 void SoilSolver<D>::compute_rates_with(const Kernel& kernel) {
   const int every = params_.stress_filter_every;
-  if (every > 0 && step_ > 0 && step_ % static_cast<std::uint64_t>(every) == 0)
+  if (every > 0 && scalars_.step > 0 && scalars_.step % static_cast<std::uint64_t>(every) == 0)
     filter_soil_stress(params_.stress_filter, neighbours_, kernel, params_, particles_,
                        filter_scratch_);
   update_soil_wall_state(neighbours_, kernel, params_, particles_);
   if (params_.any_artificial_stress()) update_artificial_stress(params_, particles_);
   const SoilRateSummary r = compute_soil_rates(neighbours_, kernel, params_, particles_);
   const double max_acceleration =
-      std::max(r.max_total_acceleration, loads_.apply(time_, particles_, &load_force_));
+      std::max(r.max_total_acceleration, loads_.apply(scalars_.time, particles_, &load_force_));
   // The weight ratios these rates used (the books' inertia_switch, soil_impulse_book.h).
   rates_weight_ratio_.assign(particles_.weight_ratio.begin(),
                              particles_.weight_ratio.begin() + particles_.n_free);
-  limits_ = sph::time_step_limits(params_.h, params_.sound_speed, r.max_speed, 0.0,
-                                  max_acceleration, params_.cfl, 0.125, params_.c_a);
+  scalars_.limits = sph::time_step_limits(params_.h, params_.sound_speed, r.max_speed, 0.0,
+                                          max_acceleration, params_.cfl, 0.125, params_.c_a);
 }
 
 template <int D>
@@ -153,21 +153,21 @@ template <int D>
 void SoilSolver<D>::fill_state(coupling::StepState& out, const std::vector<double>& overlap_min,
                                const std::vector<double>& overlap_max) {
   const SoilParticles<D>& P = particles_;
-  out.step = step_;
-  out.time = time_;
+  out.step = scalars_.step;
+  out.time = scalars_.time;
   fill_soil_overlap(P, params_.volume, overlap_min, overlap_max, overlap_index_, out);
   fill_soil_diagnostics(P, out.region_min, out.region_max, out.diagnostics);
   // Reported before its rates are computed (solver_runtime.h): the CFL limit of the current
   // speeds, eq. 21 of the latest rates.
-  limits_.cfl =
+  scalars_.limits.cfl =
       sph::cfl_limit(params_.cfl, params_.h, params_.sound_speed, out.diagnostics.max_speed);
-  out.dt_cfl = limits_.cfl;
-  out.dt_viscous = limits_.viscous;
-  out.dt_force = limits_.force;
-  out.dt_limit = limits_.min();
-  out.diagnostics.removed_count = removed_count_;
-  out.diagnostics.outflow_mass = outflow_mass_;
-  out.diagnostics.neighbours_per_particle = neighbours_per_particle_;
+  out.dt_cfl = scalars_.limits.cfl;
+  out.dt_viscous = scalars_.limits.viscous;
+  out.dt_force = scalars_.limits.force;
+  out.dt_limit = scalars_.limits.min();
+  out.diagnostics.removed_count = scalars_.removed_count;
+  out.diagnostics.outflow_mass = scalars_.outflow_mass;
+  out.diagnostics.neighbours_per_particle = scalars_.neighbours_per_particle;
   book_.flatten(out.diagnostics.external_impulse);  // of the last advance (soil_impulse_book.h)
   const sph::Vec<D> pi = effective_momentum(P, 0, P.n_free);
   out.diagnostics.balance_momentum.assign(pi.data(), pi.data() + D);
@@ -199,7 +199,7 @@ void SoilSolver<D>::add_interaction(const std::vector<double>& acceleration) {
     for (int k = 0; k < D; ++k) particles_.interaction[index][k] = acceleration[i * D + k];
   }
   interaction_fresh_ = true;
-  interaction_nonzero_ = true;
+  scalars_.interaction_nonzero = true;
 }
 
 template <int D>
@@ -226,13 +226,13 @@ void SoilSolver<D>::set_saturation(const std::vector<double>& saturation) {
 template <int D>
 void SoilSolver<D>::advance(double dt) {
   SoilParticles<D>& P = particles_;
-  if (!interaction_fresh_ && interaction_nonzero_) {
+  if (!interaction_fresh_ && scalars_.interaction_nonzero) {
     std::fill(P.interaction.begin(), P.interaction.end(), sph::Vec<D>::Zero());
     fixed_interaction_.clear();
-    interaction_nonzero_ = false;
+    scalars_.interaction_nonzero = false;
   }
   interaction_fresh_ = false;
-  const bool damping = time_ < params_.damping_duration;
+  const bool damping = scalars_.time < params_.damping_duration;
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
   const double inv_h2 = 1.0 / (params_.h * params_.h);
   // Dynamic relaxation: a -= D v, D = coefficient sqrt(E / (rho h^2)) during the stage.
@@ -267,9 +267,10 @@ void SoilSolver<D>::advance(double dt) {
     P.porosity[i] = porous::porosity_from_density(m.porosity, P.reference_density[i], P.density[i]);
     box_.wrap(P.position[i]);
   }
-  time_ += dt;
-  ++step_;
-  if (params_.damping_duration > 0.0 && !damping_released_ && time_ >= params_.damping_duration) {
+  scalars_.time += dt;
+  ++scalars_.step;
+  if (params_.damping_duration > 0.0 && !damping_released_ &&
+      scalars_.time >= params_.damping_duration) {
     book_[kSoilDamping] -= effective_momentum(P, 0, P.n_free);
     for (std::int64_t i = 0; i < n; ++i) P.velocity[i].setZero();  // end of the damping stage
     damping_released_ = true;
@@ -300,19 +301,20 @@ void SoilSolver<D>::remove_particles_outside() {
   const auto removing = [this, &P](std::size_t i) {  // its momentum leaves with it
     book_[kSoilOutflow] -= (P.weight_ratio[i] * P.mass[i]) * P.velocity[i];
   };
-  removed_count_ +=
-      sph::remove_free_particles(particles_, outside, keep_scratch_, outflow_mass_, removing);
+  scalars_.removed_count += sph::remove_free_particles(particles_, outside, keep_scratch_,
+                                                       scalars_.outflow_mass, removing);
 }
 
 template <int D>
 void SoilSolver<D>::remove_expired_walls() {
-  if (next_wall_removal_ < 0.0 || time_ < next_wall_removal_) return;
-  next_wall_removal_ = sph::remove_expired_fixed_particles(particles_, time_, keep_scratch_);
+  if (scalars_.next_wall_removal < 0.0 || scalars_.time < scalars_.next_wall_removal) return;
+  scalars_.next_wall_removal =
+      sph::remove_expired_fixed_particles(particles_, scalars_.time, keep_scratch_);
 }
 
 template <int D>
 std::optional<std::string> SoilSolver<D>::find_non_finite(std::int64_t* particle_id) const {
-  return find_non_finite_soil(particles_, step_, time_, particle_id);
+  return find_non_finite_soil(particles_, scalars_.step, scalars_.time, particle_id);
 }
 
 template <int D>

@@ -34,12 +34,15 @@
 #include "sph/kernels.h"
 #include "sph/neighbour_list.h"
 #include "sph/observables.h"
+#include "sph/particle_solver_core.h"
 #include "sph/time_step_limits.h"
 
 namespace porosph::soil {
 
 template <int D>
-class SoilSolver {
+class SoilSolver : public sph::ParticleSolverCore<D, SoilParticles<D>> {
+  using Core = sph::ParticleSolverCore<D, SoilParticles<D>>;
+
  public:
   /// Particles from scene.soil.blocks (lattice points inside the soil's walls or an earlier block
   /// skipped, points outside the domain dropped; blocks of a fixed material become fixed
@@ -49,7 +52,6 @@ class SoilSolver {
 
   /// Neighbour search + fixed-particle state + artificial stress + all rates.
   void compute_rates();
-  sph::DtLimits dt_limits() const { return limits_; }
 
   /// Diagnostics and the overlap set (free soil particles inside [overlap_min, overlap_max]; with
   /// porosity and material). Reuses out's vectors.
@@ -77,10 +79,6 @@ class SoilSolver {
   /// plastic_strain, displacement, saturation, id, material, fixed; valid until the next
   /// compute_rates/advance.
   std::vector<io::FieldView> snapshot_fields() const;
-  /// The physics terms this solver evaluates for its scene (run.json phases.soil.terms): the same
-  /// predicates that select the compiled pair loops (soil_rates.cpp) and the optional stages.
-  /// The terms the registry switches on for the scene (scene/term_registry.h).
-  const std::vector<std::string>& active_terms() const { return terms_; }
   /// The sources of the external impulses reported with each state (soil_impulse_book.h).
   std::vector<std::string> impulse_sources() const { return soil_impulse_sources(); }
   /// The external impulses of the last advance() (zero before the first), by source.
@@ -95,16 +93,15 @@ class SoilSolver {
   /// run then continues exactly as the one that wrote it. Throws std::runtime_error on a mismatch.
   void restore_checkpoint(const io::CheckpointReader& in);
 
-  double time() const { return time_; }
-  std::uint64_t step() const { return step_; }
-  std::size_t particle_count() const { return particles_.size(); }
-  std::size_t free_count() const { return particles_.n_free; }
-
-  const SoilParticles<D>& particles() const { return particles_; }
   SoilParticles<D>& mutable_particles() { return particles_; }  ///< for tests
   const SoilParams<D>& params() const { return params_; }
 
  private:
+  using Core::neighbours_;
+  using Core::particles_;
+  using Core::scalars_;
+  using Core::terms_;
+
   template <class Kernel>
   void compute_rates_with(const Kernel& kernel);
   void update_stresses(double dt);
@@ -113,26 +110,15 @@ class SoilSolver {
   double evaluate(const sph::PreparedObservable<D>& o, const sph::ParticleView<D>& view) const;
 
   SoilParams<D> params_;
-  std::vector<std::string> terms_;
   sph::DomainBox<D> box_;
   sph::KernelChoice<D> kernel_;  ///< run.kernel: the one dispatch to the compiled loops
   SurfaceLoads<D> loads_;        ///< [[soil.loads]]: tractions on tagged particles
   std::vector<sph::PreparedObservable<D>> observables_;
 
-  SoilParticles<D> particles_;
-  sph::NeighbourList<D> neighbours_;
   sph::CellOrder<D> cell_order_{neighbours_, params_.h};  ///< search, re-sort by cell
-  sph::DtLimits limits_;
-  double time_ = 0.0;
-  std::uint64_t step_ = 0;
-  std::uint64_t removed_count_ = 0;
-  double neighbours_per_particle_ = 0.0;  ///< of the latest neighbour list (free particles)
-  double outflow_mass_ = 0.0;      ///< mass of the particles that left the domain so far [kg]
   bool damping_released_ = false;  ///< velocities zeroed at the end of the damping stage
   bool interaction_fresh_ = false;
-  bool interaction_nonzero_ = false;
-  bool saturation_set_ = false;  ///< some particle has a non-zero saturation
-  double next_wall_removal_ = -1.0;
+  bool saturation_set_ = false;                   ///< some particle has a non-zero saturation
   SoilImpulseBook<D> book_;                       ///< of the last advance() (checkpointed)
   sph::Vec<D> load_force_ = sph::Vec<D>::Zero();  ///< the surface loads' total, latest rates
   std::vector<double> rates_weight_ratio_;  ///< weight_ratio of the free soil at the latest rates
