@@ -19,8 +19,8 @@
 // limit). Zones must not straddle a periodic face.
 //
 // Outflow zone: free water particles inside the box [min, max] are removed (zone particles never
-// are). Inflow speeds are 0 during the damping stage (t < hold_until, damping_stage.h), whatever
-// the ramp says.
+// are). Inflow speeds are 0 during the damping stage (t < hold_until, sph/damping_stage.h),
+// whatever the ramp says.
 #pragma once
 
 #include <cstdint>

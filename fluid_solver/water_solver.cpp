@@ -42,7 +42,7 @@ WaterSolver<D>::WaterSolver(const scene::Scene& s)
       params_(WaterParams<D>::from_scene(s)),
       box_(sph::DomainBox<D>::from_scene(s, 2.0 * params_.h)),
       kernel_(s.run.kernel, params_.h, s.run.dp, s.run.kernel_gradient != "plain"),
-      damping_(DampingStage::from_scene(s)),
+      damping_(sph::DampingStage::from_scene(s)),
       zones_(*s.water, params_.dp, damping_.duration()),
       reservoirs_(*s.water, params_.gravity, params_.dp, params_.h, params_.eos),
       open_(*s.water, {params_.gravity, params_.h, params_.eos}, params_.dp, damping_.duration(),
@@ -216,7 +216,7 @@ void WaterSolver<D>::advance(double dt) {
   }
   interaction_fresh_ = false;
   book_.clear();
-  if (!damping_.frozen(scalars_.time)) integrate(dt);  // else the water waits (damping_stage.h)
+  if (!damping_.active(scalars_.time)) integrate(dt);  // else the water waits (sph/damping_stage.h)
   moving_walls_.move(particles_, dt);
   scalars_.time += dt;
   ++scalars_.step;
@@ -227,13 +227,13 @@ template <int D>
 bool WaterSolver<D>::density_filter_due() const {
   const int every = params_.density_filter_every;
   return every > 0 && scalars_.step > 0 && scalars_.step % static_cast<std::uint64_t>(every) == 0 &&
-         !damping_.frozen(scalars_.time);
+         !damping_.active(scalars_.time);
 }
 
 template <int D>
 bool WaterSolver<D>::next_step_is_euler() const {
   const bool release =
-      damping_.duration() > 0.0 && !damping_.released() && !damping_.frozen(scalars_.time);
+      damping_.duration() > 0.0 && !damping_.released() && !damping_.active(scalars_.time);
   return sph::is_euler_step(scalars_.step, params_.euler_every) || density_filter_due() || release;
 }
 

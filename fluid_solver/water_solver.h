@@ -10,7 +10,6 @@
 #include <string>
 #include <vector>
 
-#include "fluid_solver/damping_stage.h"
 #include "fluid_solver/flow_zones.h"
 #include "fluid_solver/moving_walls.h"
 #include "fluid_solver/open_reservoirs.h"
@@ -25,6 +24,7 @@
 #include "proto/coupling_client.h"
 #include "scene/scene.h"
 #include "sph/cell_order.h"
+#include "sph/damping_stage.h"
 #include "sph/domain_box.h"
 #include "sph/kernel_choice.h"
 #include "sph/kernels.h"
@@ -73,8 +73,8 @@ class WaterSolver : public sph::ParticleSolverCore<D, WaterParticles<D>> {
   /// renewal of the zones (flow_zones.h); periodic wrap; removal of the water that left the domain,
   /// entered an outflow zone or rose above a reservoir's level (counted in removed_count); refill
   /// of the reservoirs (reservoirs.h); none of this while the damping stage
-  /// freezes the water (damping_stage.h). Then time += dt, ++step, and removal of the walls whose
-  /// time has come.
+  /// freezes the water (sph/damping_stage.h). Then time += dt, ++step, and removal of the walls
+  /// whose time has come.
   void advance(double dt);
 
   /// "non-finite velocity of particle 123 (x = ...)" and *particle_id = 123, or std::nullopt when
@@ -105,7 +105,7 @@ class WaterSolver : public sph::ParticleSolverCore<D, WaterParticles<D>> {
   const FlowZones<D>& flow_zones() const { return zones_; }
   const Reservoirs<D>& reservoirs() const { return reservoirs_; }
   const OpenReservoirs<D>& open_reservoirs() const { return open_; }
-  const DampingStage& damping_stage() const { return damping_; }
+  const sph::DampingStage& damping_stage() const { return damping_; }
 
  private:
   using Core::neighbours_;
@@ -131,7 +131,7 @@ class WaterSolver : public sph::ParticleSolverCore<D, WaterParticles<D>> {
   WaterParams<D> params_;
   sph::DomainBox<D> box_;
   sph::KernelChoice<D> kernel_;  ///< run.kernel: the one dispatch to the compiled loops
-  DampingStage damping_;
+  sph::DampingStage damping_;
   FlowZones<D> zones_;
   Reservoirs<D> reservoirs_;
   OpenReservoirs<D> open_;       ///< zone codes after the inflow zones'

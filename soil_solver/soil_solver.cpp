@@ -28,6 +28,7 @@ template <int D>
 SoilSolver<D>::SoilSolver(const scene::Scene& s)
     : Core(scene::active_terms(s, "soil")),
       params_(SoilParams<D>::from_scene(s)),
+      damping_(params_.damping_duration),
       box_(sph::DomainBox<D>::from_scene(s, 2.0 * params_.h)),
       kernel_(s.run.kernel, params_.h, s.run.dp, s.run.kernel_gradient != "plain"),
       loads_(*s.soil) {
@@ -232,7 +233,7 @@ void SoilSolver<D>::advance(double dt) {
     scalars_.interaction_nonzero = false;
   }
   interaction_fresh_ = false;
-  const bool damping = scalars_.time < params_.damping_duration;
+  const bool damping = damping_.active(scalars_.time);  // sph/damping_stage.h
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
   const double inv_h2 = 1.0 / (params_.h * params_.h);
   // Dynamic relaxation: a -= D v, D = coefficient sqrt(E / (rho h^2)) during the stage.
@@ -269,11 +270,9 @@ void SoilSolver<D>::advance(double dt) {
   }
   scalars_.time += dt;
   ++scalars_.step;
-  if (params_.damping_duration > 0.0 && !damping_released_ &&
-      scalars_.time >= params_.damping_duration) {
+  if (damping_.release(scalars_.time)) {  // the end of the damping stage
     book_[kSoilDamping] -= effective_momentum(P, 0, P.n_free);
-    for (std::int64_t i = 0; i < n; ++i) P.velocity[i].setZero();  // end of the damping stage
-    damping_released_ = true;
+    for (std::int64_t i = 0; i < n; ++i) P.velocity[i].setZero();
   }
   remove_particles_outside();
   remove_expired_walls();

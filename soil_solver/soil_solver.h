@@ -29,6 +29,7 @@
 #include "soil_solver/soil_particles.h"
 #include "soil_solver/surface_loads.h"
 #include "sph/cell_order.h"
+#include "sph/damping_stage.h"
 #include "sph/domain_box.h"
 #include "sph/kernel_choice.h"
 #include "sph/kernels.h"
@@ -110,13 +111,13 @@ class SoilSolver : public sph::ParticleSolverCore<D, SoilParticles<D>> {
   double evaluate(const sph::PreparedObservable<D>& o, const sph::ParticleView<D>& view) const;
 
   SoilParams<D> params_;
+  sph::DampingStage damping_;  ///< soil.damping_duration (0 with the term off)
   sph::DomainBox<D> box_;
   sph::KernelChoice<D> kernel_;  ///< run.kernel: the one dispatch to the compiled loops
   SurfaceLoads<D> loads_;        ///< [[soil.loads]]: tractions on tagged particles
   std::vector<sph::PreparedObservable<D>> observables_;
 
   sph::CellOrder<D> cell_order_{neighbours_, params_.h};  ///< search, re-sort by cell
-  bool damping_released_ = false;  ///< velocities zeroed at the end of the damping stage
   bool interaction_fresh_ = false;
   bool saturation_set_ = false;                   ///< some particle has a non-zero saturation
   SoilImpulseBook<D> book_;                       ///< of the last advance() (checkpointed)

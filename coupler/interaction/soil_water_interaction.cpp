@@ -70,7 +70,7 @@ SoilWaterInteraction::SoilWaterInteraction(const scene::Scene& scene, int thread
   } else {
     throw std::invalid_argument("soil-water interaction: run.dimension must be 2 or 3");
   }
-  damping_duration_ = scene.soil->damping_duration;
+  damping_ = sph::DampingStage::from_scene(scene);
   implicit_drag_ = scene.coupling.implicit_drag;
   material_count_ = scene.soil->materials.size();
   terms_ = scene::active_terms(scene, "interaction");
@@ -124,7 +124,7 @@ InteractionSummary SoilWaterInteraction::compute(const coupling::StepState& wate
     out_.soil_rate.clear();
     return {};
   }
-  forces_ = !(time < damping_duration_);
+  forces_ = !damping_.active(time);  // sph/damping_stage.h
   return engine_->compute(water, soil, forces_, out_);
 }
 

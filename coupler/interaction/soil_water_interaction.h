@@ -32,6 +32,7 @@
 
 #include "proto/coupling_client.h"
 #include "scene/scene.h"
+#include "sph/damping_stage.h"
 
 namespace porosph::coupler {
 
@@ -125,7 +126,7 @@ class SoilWaterInteraction {
   bool forces_ = false;  ///< the last compute() computed forces
   std::vector<std::string> terms_;
   int dimension_ = 2;
-  double damping_duration_ = 0.0;
+  sph::DampingStage damping_;  ///< soil.damping_duration: no seepage forces in the stage
   std::size_t material_count_ = 0;
   InteractionOutputs out_;
 };

@@ -1,4 +1,4 @@
-// The damping stage seen from the water (fluid_solver/damping_stage.h): with soil.damping_duration
+// The damping stage seen from the water (sph/damping_stage.h): with soil.damping_duration
 // set the water is frozen until then, inflow speeds are 0, and the first step after it starts from
 // zero velocities with an Euler step.
 #include <gtest/gtest.h>
