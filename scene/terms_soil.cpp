@@ -161,7 +161,9 @@ void add_soil_terms(std::vector<TermSpec>& t) {
                      .doc("Earth pressure coefficient at rest for geostatic initial stress: "
                           "jaky, K0 = 1 - sin(phi); elastic, K0 = nu / (1 - nu).")}));
   t.push_back(soil_term(
-      "damping_stage", "Initial damping (dynamic relaxation) stage; soil_solver/soil_solver.cpp.",
+      "damping_stage",
+      "Initial damping (dynamic relaxation) stage; sph/damping_stage.h, "
+      "soil_solver/soil_solver.cpp.",
       "soil.damping_duration > 0", [](const Scene& s) { return soil(s).damping_duration > 0.0; },
       {Key("soil.damping_duration", T::Float)
            .unit("s")

@@ -233,7 +233,7 @@ void add_water_terms(std::vector<TermSpec>& t) {
   t.push_back(term("periodic", "Periodic domain axes; sph/domain_box.h.", "any run.periodic axis",
                    any_periodic));
   t.push_back(term("damping_stage_freeze",
-                   "The water is frozen while the soil settles; fluid_solver/damping_stage.h.",
+                   "The water is frozen while the soil settles; sph/damping_stage.h.",
                    "soil.damping_duration > 0",
                    [](const Scene& s) { return s.soil && s.soil->damping_duration > 0.0; }));
 }
