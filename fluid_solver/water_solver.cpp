@@ -174,18 +174,9 @@ void WaterSolver<D>::fill_state(coupling::StepState& out, const std::vector<doub
 
 template <int D>
 void WaterSolver<D>::add_interaction(const std::vector<double>& acceleration) {
-  if (acceleration.size() != overlap_index_.size() * D) {
-    throw std::invalid_argument("add_interaction: expected " +
-                                std::to_string(overlap_index_.size() * D) + " values, got " +
-                                std::to_string(acceleration.size()));
-  }
-  std::fill(particles_.interaction.begin(), particles_.interaction.end(), sph::Vec<D>::Zero());
-  for (std::size_t i = 0; i < overlap_index_.size(); ++i) {
-    for (int k = 0; k < D; ++k)
-      particles_.interaction[overlap_index_[i]][k] = acceleration[i * D + k];
-  }
-  interaction_fresh_ = true;
-  scalars_.interaction_nonzero = true;
+  // Every overlap particle takes its share (the water's overlap set holds free water only).
+  this->scatter_interaction(acceleration, particles_.size(),
+                            [](std::int32_t, const sph::Vec<D>&) {});
 }
 
 template <int D>
@@ -315,13 +306,6 @@ void WaterSolver<D>::remove_leaving_particles() {
   };
   scalars_.removed_count += sph::remove_free_particles(particles_, leaving, keep_scratch_,
                                                        scalars_.outflow_mass, removing);
-}
-
-template <int D>
-void WaterSolver<D>::remove_expired_walls() {
-  if (scalars_.next_wall_removal < 0.0 || scalars_.time < scalars_.next_wall_removal) return;
-  scalars_.next_wall_removal =
-      sph::remove_expired_fixed_particles(particles_, scalars_.time, keep_scratch_);
 }
 
 template class WaterSolver<2>;

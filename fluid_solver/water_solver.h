@@ -108,8 +108,12 @@ class WaterSolver : public sph::ParticleSolverCore<D, WaterParticles<D>> {
   const sph::DampingStage& damping_stage() const { return damping_; }
 
  private:
+  using Core::interaction_fresh_;
+  using Core::keep_scratch_;
   using Core::neighbours_;
+  using Core::overlap_index_;
   using Core::particles_;
+  using Core::remove_expired_walls;
   using Core::scalars_;
   using Core::terms_;
 
@@ -125,7 +129,6 @@ class WaterSolver : public sph::ParticleSolverCore<D, WaterParticles<D>> {
   /// a reservoir's level.
   bool leaves(std::size_t a) const;
   void remove_leaving_particles();
-  void remove_expired_walls();
   double evaluate(const sph::PreparedObservable<D>& o, const sph::ParticleView<D>& view) const;
 
   WaterParams<D> params_;
@@ -143,13 +146,10 @@ class WaterSolver : public sph::ParticleSolverCore<D, WaterParticles<D>> {
   double inflow_mass_ = 0.0;  ///< mass of the particles born in inflow zones / reservoirs [kg]
   std::int64_t next_id_ = 0;  ///< id of the next particle born in an inflow zone
   double dt_previous_ = 0.0;  ///< the last step's dt: the Verlet span is dt_previous + dt
-  bool interaction_fresh_ = false;      ///< add_interaction called since the last advance
   bool viscosity_cut_nonzero_ = false;  ///< particles_.viscosity_cut may hold non-zero values
   double physics_seconds_ = 0.0;
   WaterImpulseBook<D> book_;  ///< of the last advance() (checkpointed)
 
-  std::vector<std::int32_t> overlap_index_;
-  std::vector<std::uint8_t> keep_scratch_;
   std::vector<double> filter_scratch_;
   ParticleShiftingGradients<D> shifting_;  ///< of the latest rates (water.particle_shifting > 0)
   mutable PoreFields<D> pore_fields_;      ///< porosity, pore velocity of the next snapshot

@@ -182,25 +182,12 @@ void SoilSolver<D>::fill_state(coupling::StepState& out, const std::vector<doubl
 
 template <int D>
 void SoilSolver<D>::add_interaction(const std::vector<double>& acceleration) {
-  if (acceleration.size() != overlap_index_.size() * D) {
-    throw std::invalid_argument("add_interaction: expected " +
-                                std::to_string(overlap_index_.size() * D) + " values, got " +
-                                std::to_string(acceleration.size()));
-  }
-  std::fill(particles_.interaction.begin(), particles_.interaction.end(), sph::Vec<D>::Zero());
   fixed_interaction_.clear();
-  for (std::size_t i = 0; i < overlap_index_.size(); ++i) {
-    const std::size_t index = static_cast<std::size_t>(overlap_index_[i]);
-    if (index >= particles_.n_free) {  // fixed soil exchanges drag but never moves: only booked
-      sph::Vec<D> a;
-      for (int k = 0; k < D; ++k) a[k] = acceleration[i * D + k];
-      fixed_interaction_.emplace_back(overlap_index_[i], a);
-      continue;
-    }
-    for (int k = 0; k < D; ++k) particles_.interaction[index][k] = acceleration[i * D + k];
-  }
-  interaction_fresh_ = true;
-  scalars_.interaction_nonzero = true;
+  // Fixed soil exchanges drag but never moves: its share is only booked.
+  this->scatter_interaction(acceleration, particles_.n_free,
+                            [this](std::int32_t index, const sph::Vec<D>& a) {
+                              fixed_interaction_.emplace_back(index, a);
+                            });
 }
 
 template <int D>
@@ -302,13 +289,6 @@ void SoilSolver<D>::remove_particles_outside() {
   };
   scalars_.removed_count += sph::remove_free_particles(particles_, outside, keep_scratch_,
                                                        scalars_.outflow_mass, removing);
-}
-
-template <int D>
-void SoilSolver<D>::remove_expired_walls() {
-  if (scalars_.next_wall_removal < 0.0 || scalars_.time < scalars_.next_wall_removal) return;
-  scalars_.next_wall_removal =
-      sph::remove_expired_fixed_particles(particles_, scalars_.time, keep_scratch_);
 }
 
 template <int D>

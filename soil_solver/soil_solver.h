@@ -98,8 +98,12 @@ class SoilSolver : public sph::ParticleSolverCore<D, SoilParticles<D>> {
   const SoilParams<D>& params() const { return params_; }
 
  private:
+  using Core::interaction_fresh_;
+  using Core::keep_scratch_;
   using Core::neighbours_;
+  using Core::overlap_index_;
   using Core::particles_;
+  using Core::remove_expired_walls;
   using Core::scalars_;
   using Core::terms_;
 
@@ -107,7 +111,6 @@ class SoilSolver : public sph::ParticleSolverCore<D, SoilParticles<D>> {
   void compute_rates_with(const Kernel& kernel);
   void update_stresses(double dt);
   void remove_particles_outside();
-  void remove_expired_walls();
   double evaluate(const sph::PreparedObservable<D>& o, const sph::ParticleView<D>& view) const;
 
   SoilParams<D> params_;
@@ -118,7 +121,6 @@ class SoilSolver : public sph::ParticleSolverCore<D, SoilParticles<D>> {
   std::vector<sph::PreparedObservable<D>> observables_;
 
   sph::CellOrder<D> cell_order_{neighbours_, params_.h};  ///< search, re-sort by cell
-  bool interaction_fresh_ = false;
   bool saturation_set_ = false;                   ///< some particle has a non-zero saturation
   SoilImpulseBook<D> book_;                       ///< of the last advance() (checkpointed)
   sph::Vec<D> load_force_ = sph::Vec<D>::Zero();  ///< the surface loads' total, latest rates
@@ -126,8 +128,6 @@ class SoilSolver : public sph::ParticleSolverCore<D, SoilParticles<D>> {
   /// The interaction the coupler sent to fixed soil (index, acceleration): never applied, booked.
   std::vector<std::pair<std::int32_t, sph::Vec<D>>> fixed_interaction_;
 
-  std::vector<std::int32_t> overlap_index_;
-  std::vector<std::uint8_t> keep_scratch_;
   std::vector<Eigen::Matrix3d> filter_scratch_;
 };
 

@@ -7,13 +7,16 @@
 // restore_checkpoint; documented there).
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "sph/neighbour_list.h"
+#include "sph/particle_removal.h"
 #include "sph/solver_scalars.h"
 #include "sph/time_step_limits.h"
 
@@ -39,10 +42,48 @@ class ParticleSolverCore {
  protected:
   explicit ParticleSolverCore(std::vector<std::string> terms) : terms_(std::move(terms)) {}
 
+  /// The common part of add_interaction(): every particle's interaction to zero, then the
+  /// coupler's accelerations (n*D values, row-major, in the order of the overlap set the last
+  /// fill_state() reported) onto the overlap particles with index < movable; on_fixed(index, a)
+  /// gets those of the others. Throws std::invalid_argument on a size mismatch.
+  template <class OnFixed>
+  void scatter_interaction(const std::vector<double>& acceleration, std::size_t movable,
+                           OnFixed&& on_fixed) {
+    if (acceleration.size() != overlap_index_.size() * D) {
+      throw std::invalid_argument("add_interaction: expected " +
+                                  std::to_string(overlap_index_.size() * D) + " values, got " +
+                                  std::to_string(acceleration.size()));
+    }
+    std::fill(particles_.interaction.begin(), particles_.interaction.end(), Vec<D>::Zero());
+    for (std::size_t i = 0; i < overlap_index_.size(); ++i) {
+      const std::size_t index = static_cast<std::size_t>(overlap_index_[i]);
+      Vec<D> a;
+      for (int k = 0; k < D; ++k) a[k] = acceleration[i * D + k];
+      if (index < movable) {
+        particles_.interaction[index] = a;
+      } else {
+        on_fixed(overlap_index_[i], a);
+      }
+    }
+    interaction_fresh_ = true;
+    scalars_.interaction_nonzero = true;
+  }
+
+  /// Removes the fixed particles whose time has come (a wall's remove_at; particle_removal.h).
+  void remove_expired_walls() {
+    if (scalars_.next_wall_removal < 0.0 || scalars_.time < scalars_.next_wall_removal) return;
+    scalars_.next_wall_removal =
+        remove_expired_fixed_particles(particles_, scalars_.time, keep_scratch_);
+  }
+
   Particles particles_;
   NeighbourList<D> neighbours_;
   SolverScalars scalars_;  ///< time, step, dt limits, removal and interaction bookkeeping
   std::vector<std::string> terms_;
+  /// The particles of the overlap set the last fill_state() reported, in its order.
+  std::vector<std::int32_t> overlap_index_;
+  bool interaction_fresh_ = false;  ///< add_interaction called since the last advance
+  std::vector<std::uint8_t> keep_scratch_;
 };
 
 }  // namespace porosph::sph
