@@ -10,15 +10,13 @@
 #include "fluid_solver/equation_of_state.h"
 #include "scene/scene.h"
 #include "scene/term_registry.h"
+#include "sph/particle_spacing.h"
 #include "sph/vector.h"
 
 namespace porosph::water {
 
 template <int D>
-struct WaterParams {
-  double dp = 0.01;                          ///< particle spacing [m]
-  double h = 0.012;                          ///< smoothing length [m]
-  double volume = 1e-4;                      ///< particle volume dp^D [m^D]
+struct WaterParams : sph::ParticleSpacing {  // dp, h, volume
   TaitEos eos;                               ///< eq. 4
   double mu = 0.0;                           ///< dynamic viscosity [Pa s] (laminar term; 0: off)
   std::string laminar_viscosity = "morris";  ///< its law (laminar_viscosity.h)
@@ -62,17 +60,10 @@ struct WaterParams {
 
   /// Throws std::invalid_argument if the scene has no water or an unknown wall condition.
   static WaterParams from_scene(const scene::Scene& s) {
-    if (!s.water) throw std::invalid_argument("water solver: the scene has no [water] phase");
-    if (s.run.dimension != D) {
-      throw std::invalid_argument("water solver built for D = " + std::to_string(D) +
-                                  " but run.dimension = " + std::to_string(s.run.dimension));
-    }
+    WaterParams p;
+    p.take_from_scene<D>(s, "water");
     const scene::WaterPhase& w = *s.water;
     const scene::TermSwitches on(s, "water");  // the registry decides what runs
-    WaterParams p;
-    p.dp = s.run.dp;
-    p.h = s.h();
-    p.volume = std::pow(p.dp, D);
     p.eos = TaitEos(w.rho0, w.sound_speed, w.gamma);
     p.laminar_viscosity = w.laminar_viscosity;
     p.mu = on(w.laminar_viscosity + "_viscosity") ? w.viscosity : 0.0;

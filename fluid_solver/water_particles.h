@@ -90,22 +90,6 @@ struct WaterParticles {
     for_each_array([capacity](auto& array) { array.reserve(capacity); });
   }
 
-  /// Keeps the particles with keep[i] != 0, in order; n_free follows. Returns the number removed.
-  std::size_t compact(const std::vector<std::uint8_t>& keep) {
-    std::size_t kept_free = 0;
-    for (std::size_t i = 0; i < n_free; ++i) kept_free += keep[i] != 0;
-    const std::size_t n = size();
-    for_each_array([&](auto& array) {
-      std::size_t w = 0;
-      for (std::size_t r = 0; r < n; ++r)
-        if (keep[r]) array[w++] = array[r];
-      array.resize(w);
-    });
-    const std::size_t removed = n - size();
-    n_free = kept_free;
-    return removed;
-  }
-
   /// Re-orders every array: new[i] = old[order[i]]; `order` must keep water before walls.
   /// Capacities are kept (the scratch buffers take the arrays' capacity).
   void permute(const std::vector<std::int32_t>& order) {

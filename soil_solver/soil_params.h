@@ -16,6 +16,7 @@
 #include "soil_solver/geostatic_stress.h"
 #include "soil_solver/soil_artificial_viscosity.h"
 #include "soil_solver/soil_material.h"
+#include "sph/particle_spacing.h"
 #include "sph/vector.h"
 
 namespace porosph::soil {
@@ -44,8 +45,7 @@ struct SoilMaterialConstants {
 enum class StressFilterKind { Shepard, Mls };
 
 template <int D>
-struct SoilParams {
-  double dp = 0.01, h = 0.012, volume = 1e-4;
+struct SoilParams : sph::ParticleSpacing {  // dp, h, volume
   sph::Vec<D> gravity = sph::Vec<D>::Zero();
   double sound_speed = 0.0;  ///< c_s of the CFL limit and the artificial viscosity [m/s]
   SoilArtificialViscosity viscosity;
@@ -75,17 +75,10 @@ struct SoilParams {
 
   /// Throws std::invalid_argument on a scene without soil, a dimension mismatch or a bad material.
   static SoilParams from_scene(const scene::Scene& s) {
-    if (!s.soil) throw std::invalid_argument("soil solver: the scene has no [soil] phase");
-    if (s.run.dimension != D) {
-      throw std::invalid_argument("soil solver built for D = " + std::to_string(D) +
-                                  " but run.dimension = " + std::to_string(s.run.dimension));
-    }
+    SoilParams p;
+    p.take_from_scene<D>(s, "soil");
     const scene::SoilPhase& soil = *s.soil;
     const scene::TermSwitches on(s, "soil");  // the registry decides what runs
-    SoilParams p;
-    p.dp = s.run.dp;
-    p.h = s.h();
-    p.volume = std::pow(p.dp, D);
     p.gravity = sph::to_vec<D>(s.run.gravity, "run.gravity");
     p.sound_speed = soil.effective_sound_speed();
     p.viscosity = on("artificial_viscosity") ? SoilArtificialViscosity{soil.alpha, soil.beta, p.h}

@@ -67,21 +67,6 @@ struct SoilParticles {
     fn(remove_at), fn(id), fn(material), fn(fixed), fn(no_slip), fn(load);
   }
 
-  /// Keeps the particles with keep[i] != 0, in order; n_free follows. Returns the number removed.
-  std::size_t compact(const std::vector<std::uint8_t>& keep) {
-    std::size_t kept_free = 0;
-    for (std::size_t i = 0; i < n_free; ++i) kept_free += keep[i] != 0;
-    const std::size_t n = size();
-    for_each_array([&](auto& array) {
-      std::size_t w = 0;
-      for (std::size_t r = 0; r < n; ++r)
-        if (keep[r]) array[w++] = array[r];
-      array.resize(w);
-    });
-    n_free = kept_free;
-    return n - size();
-  }
-
   /// Re-orders every array: new[i] = old[order[i]]; `order` must keep free before fixed.
   /// Uses one scratch buffer per element type (no allocation once they have grown).
   void permute(const std::vector<std::int32_t>& order) {

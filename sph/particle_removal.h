@@ -1,8 +1,8 @@
 // Removing particles from a phase's structure of arrays, shared by the water and soil solvers:
 // free particles that leave (the domain, an outflow zone) and fixed particles whose wall is taken
-// away at a given time (a gate). Works on any container with n_free, size(), mass, remove_at and
-// compact(keep) (fluid_solver/water_particles.h, soil_solver/soil_particles.h). `keep` is the
-// caller's scratch buffer (no allocation once it has grown).
+// away at a given time (a gate). Works on any structure of arrays with n_free, size(), mass,
+// remove_at and for_each_array(fn) (fluid_solver/water_particles.h, soil_solver/soil_particles.h).
+// `keep` is the caller's scratch buffer (no allocation once it has grown).
 #pragma once
 
 #include <cstddef>
@@ -10,6 +10,23 @@
 #include <vector>
 
 namespace porosph::sph {
+
+/// Keeps the particles with keep[i] != 0, in order, in every array; n_free follows. Returns the
+/// number removed.
+template <class Particles>
+std::size_t compact_particles(Particles& P, const std::vector<std::uint8_t>& keep) {
+  std::size_t kept_free = 0;
+  for (std::size_t i = 0; i < P.n_free; ++i) kept_free += keep[i] != 0;
+  const std::size_t n = P.size();
+  P.for_each_array([&](auto& array) {
+    std::size_t w = 0;
+    for (std::size_t r = 0; r < n; ++r)
+      if (keep[r]) array[w++] = array[r];
+    array.resize(w);
+  });
+  P.n_free = kept_free;
+  return n - P.size();
+}
 
 /// Removes the free particles i in [0, n_free) with leaves(i), adding their mass to
 /// `removed_mass` and calling removing(i) for each before it goes (to book what it carried away,
@@ -31,7 +48,7 @@ std::size_t remove_free_particles(Particles& P, const Leaves& leaves,
     removed_mass += P.mass[i];
     removing(static_cast<std::size_t>(i));
   }
-  return P.compact(keep);
+  return compact_particles(P, keep);
 }
 
 /// remove_free_particles() without a per-particle hook.
@@ -56,7 +73,7 @@ double remove_expired_fixed_particles(Particles& P, double time, std::vector<std
       next = t;
     }
   }
-  P.compact(keep);
+  compact_particles(P, keep);
   return next;
 }
 
