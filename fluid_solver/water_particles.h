@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "fluid_solver/diffusion_state.h"
+#include "sph/permutation_scratch.h"
 #include "sph/vector.h"
 
 namespace porosph::water {
@@ -93,7 +94,7 @@ struct WaterParticles {
   /// Re-orders every array: new[i] = old[order[i]]; `order` must keep water before walls.
   /// Capacities are kept (the scratch buffers take the arrays' capacity).
   void permute(const std::vector<std::int32_t>& order) {
-    for_each_array([&](auto& array) { permute_array(array, order, scratch_for(array)); });
+    for_each_array([&](auto& array) { scratch_.permute(array, order); });
   }
 
  private:
@@ -107,28 +108,7 @@ struct WaterParticles {
     fn(p.wall_motion...);
   }
 
-  template <class T>
-  static void permute_array(std::vector<T>& array, const std::vector<std::int32_t>& order,
-                            std::vector<T>& scratch) {
-    scratch.reserve(array.capacity());
-    scratch.resize(order.size());
-    const std::int64_t n = static_cast<std::int64_t>(order.size());
-#pragma omp parallel for schedule(static)
-    for (std::int64_t i = 0; i < n; ++i) scratch[i] = array[order[i]];
-    array.swap(scratch);
-  }
-
-  std::vector<Vec>& scratch_for(const std::vector<Vec>&) { return scratch_vec_; }
-  std::vector<double>& scratch_for(const std::vector<double>&) { return scratch_f64_; }
-  std::vector<std::int64_t>& scratch_for(const std::vector<std::int64_t>&) { return scratch_i64_; }
-  std::vector<std::int32_t>& scratch_for(const std::vector<std::int32_t>&) { return scratch_i32_; }
-  std::vector<std::uint8_t>& scratch_for(const std::vector<std::uint8_t>&) { return scratch_u8_; }
-
-  std::vector<Vec> scratch_vec_;
-  std::vector<double> scratch_f64_;
-  std::vector<std::int64_t> scratch_i64_;
-  std::vector<std::int32_t> scratch_i32_;
-  std::vector<std::uint8_t> scratch_u8_;
+  sph::PermutationScratch<Vec, double, std::int64_t, std::int32_t, std::uint8_t> scratch_;
 };
 
 }  // namespace porosph::water

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "sph/permutation_scratch.h"
 #include "sph/vector.h"
 
 namespace porosph::soil {
@@ -70,32 +71,11 @@ struct SoilParticles {
   /// Re-orders every array: new[i] = old[order[i]]; `order` must keep free before fixed.
   /// Uses one scratch buffer per element type (no allocation once they have grown).
   void permute(const std::vector<std::int32_t>& order) {
-    for_each_array([&](auto& array) { permute_array(array, order); });
+    for_each_array([&](auto& array) { scratch_.permute(array, order); });
   }
 
  private:
-  template <class T, class Alloc>
-  void permute_array(std::vector<T, Alloc>& array, const std::vector<std::int32_t>& order) {
-    std::vector<T, Alloc>& scratch = scratch_for(static_cast<T*>(nullptr));
-    scratch.resize(order.size());
-    const std::int64_t n = static_cast<std::int64_t>(order.size());
-#pragma omp parallel for schedule(static)
-    for (std::int64_t i = 0; i < n; ++i) scratch[i] = array[order[i]];
-    array.swap(scratch);
-  }
-  std::vector<Vec>& scratch_for(Vec*) { return scratch_vec_; }
-  std::vector<Tensor>& scratch_for(Tensor*) { return scratch_tensor_; }
-  std::vector<double>& scratch_for(double*) { return scratch_f64_; }
-  std::vector<std::int64_t>& scratch_for(std::int64_t*) { return scratch_i64_; }
-  std::vector<std::uint8_t>& scratch_for(std::uint8_t*) { return scratch_u8_; }
-  std::vector<std::int32_t>& scratch_for(std::int32_t*) { return scratch_i32_; }
-
-  std::vector<Vec> scratch_vec_;
-  std::vector<Tensor> scratch_tensor_;
-  std::vector<double> scratch_f64_;
-  std::vector<std::int64_t> scratch_i64_;
-  std::vector<std::uint8_t> scratch_u8_;
-  std::vector<std::int32_t> scratch_i32_;
+  sph::PermutationScratch<Vec, Tensor, double, std::int64_t, std::uint8_t, std::int32_t> scratch_;
 };
 
 }  // namespace porosph::soil
