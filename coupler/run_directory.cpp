@@ -11,7 +11,10 @@
 #include <cstring>
 #include <ctime>
 #include <filesystem>
+#include <iterator>
 #include <thread>
+
+#include "coupler/phase_slots.h"
 
 namespace porosph::coupler {
 
@@ -39,12 +42,11 @@ std::string describe_owner(const std::string& owner) {
   return "coupler pid " + owner.substr(0, space) + " on host " + owner.substr(space + 1);
 }
 
-/// What marks an earlier run in a directory (README.md "The run directory"). A checkpoint/ without
+/// What marks an earlier run in a directory (README.md "The run directory"), besides each phase's
+/// snapshot file under its current and former name (coupler/phase_slots.h). A checkpoint/ without
 /// a manifest holds no usable checkpoint: a new run replaces its files before naming them.
-/// fluid.h5: the water's snapshots in runs written before issue 24 (coupler/phase_slots.h).
-constexpr const char* kRunOutputs[] = {
-    "run.json", "timeseries.csv",        "run.xdmf", "water.h5", "soil.h5",
-    "fluid.h5", "checkpoint/latest.json"};
+constexpr const char* kRunRecordFiles[] = {"run.json", "timeseries.csv", "run.xdmf"};
+constexpr const char* kCheckpointManifest = "checkpoint/latest.json";
 
 }  // namespace
 
@@ -110,12 +112,35 @@ LockProbe probe_run_directory_lock(const std::string& dir) {
 }
 
 std::vector<std::string> earlier_run_outputs(const std::string& dir) {
+  std::vector<const char*> names(std::begin(kRunRecordFiles), std::end(kRunRecordFiles));
+  for (const PhaseSlot& slot : kPhaseSlots) {
+    names.push_back(slot.snapshot_file);
+    if (slot.former_snapshot_file != nullptr) names.push_back(slot.former_snapshot_file);
+  }
+  names.push_back(kCheckpointManifest);
   std::vector<std::string> found;
-  for (const char* name : kRunOutputs) {
+  for (const char* name : names) {
     std::error_code error;
     if (fs::exists(fs::symlink_status(fs::path(dir) / name, error))) found.emplace_back(name);
   }
   return found;
+}
+
+void rename_former_snapshot_files(const std::string& dir) {
+  for (const PhaseSlot& slot : kPhaseSlots) {
+    if (slot.former_snapshot_file == nullptr) continue;
+    const fs::path former = fs::path(dir) / slot.former_snapshot_file;
+    const fs::path current = fs::path(dir) / slot.snapshot_file;
+    std::error_code error;
+    if (!fs::exists(former, error) || fs::exists(current, error)) continue;
+    fs::rename(former, current, error);
+    if (error) {
+      throw RunDirectoryError("cannot rename " + former.string() + " to " + current.string() +
+                              ": " + error.message());
+    }
+    std::fprintf(stderr, "coupler: renamed %s to %s (the %s phase's snapshot file is now %s)\n",
+                 slot.former_snapshot_file, slot.snapshot_file, slot.phase, slot.snapshot_file);
+  }
 }
 
 void remove_earlier_run(const std::string& dir) {

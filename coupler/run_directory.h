@@ -48,6 +48,11 @@ LockProbe probe_run_directory_lock(const std::string& dir);
 /// soil.h5, fluid.h5 of older runs, checkpoint/latest.json): the names, empty when there are none.
 std::vector<std::string> earlier_run_outputs(const std::string& dir);
 
+/// Before a resume: a run written before the phases had one name (issue 24) keeps the water's
+/// snapshots in fluid.h5; renamed to the current name (coupler/phase_slots.h) so the solvers append
+/// to it, with a note on stderr. Throws RunDirectoryError when the rename fails.
+void rename_former_snapshot_files(const std::string& dir);
+
 /// --overwrite: removes the earlier run's outputs and its checkpoint/ directory. Throws
 /// RunDirectoryError naming the file that cannot be removed.
 void remove_earlier_run(const std::string& dir);

@@ -19,7 +19,6 @@
 #include "coupler/checkpoint.h"
 #include "coupler/coupled_step.h"
 #include "coupler/coupled_step_clock.h"
-#include "coupler/phase_slots.h"
 #include "coupler/progress_line.h"
 #include "coupler/run_directory.h"
 #include "coupler/run_record.h"
@@ -61,9 +60,6 @@ class RunSession {
   void prepare_output_dir();
   /// --resume: the run directory, the record and loop state of its latest checkpoint, the scene.
   void load_resume_point();
-  /// A run written before issue 24 named the water's snapshots fluid.h5: renamed to the current
-  /// name (coupler/phase_slots.h) before the solvers append to it.
-  void rename_former_snapshot_files() const;
   /// The scene from the file and --set, and a fresh run directory.
   void load_fresh_run();
   void start_solvers();
@@ -121,23 +117,6 @@ void RunSession::load_fresh_run() {
   prepare_output_dir();
 }
 
-void RunSession::rename_former_snapshot_files() const {
-  for (const PhaseSlot& slot : kPhaseSlots) {
-    if (slot.former_snapshot_file == nullptr) continue;
-    const fs::path former = fs::path(out_dir_) / slot.former_snapshot_file;
-    const fs::path current = fs::path(out_dir_) / slot.snapshot_file;
-    std::error_code error;
-    if (!fs::exists(former, error) || fs::exists(current, error)) continue;
-    fs::rename(former, current, error);
-    if (error) {
-      throw BadInput("cannot resume: cannot rename " + former.string() + " to " + current.string() +
-                     ": " + error.message());
-    }
-    std::fprintf(stderr, "coupler: renamed %s to %s (the %s phase's snapshot file is now %s)\n",
-                 slot.former_snapshot_file, slot.snapshot_file, slot.phase, slot.snapshot_file);
-  }
-}
-
 void RunSession::load_resume_point() {
   std::error_code error;
   if (!fs::is_directory(options_.resume_dir, error)) {
@@ -175,7 +154,11 @@ void RunSession::load_resume_point() {
       throw BadInput("cannot resume: the checkpoint has no " + phase + " solver state");
     }
   }
-  rename_former_snapshot_files();
+  try {
+    rename_former_snapshot_files(out_dir_);
+  } catch (const RunDirectoryError& e) {
+    throw BadInput(std::string("cannot resume: ") + e.what());
+  }
   record_.status = "running";
   record_.message.clear();
   record_.resumes += 1;

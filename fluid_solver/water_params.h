@@ -8,6 +8,7 @@
 
 #include "fluid_solver/artificial_viscosity.h"
 #include "fluid_solver/equation_of_state.h"
+#include "scene/choice.h"
 #include "scene/scene.h"
 #include "scene/term_registry.h"
 #include "sph/particle_spacing.h"
@@ -73,18 +74,13 @@ struct WaterParams : sph::ParticleSpacing {  // dp, h, volume
     if (on("artificial_viscosity_drag_limited")) {
       p.artificial.damping_rate =
           ArtificialViscosity::kernel_damping_rate(w.alpha, w.sound_speed, p.h, D);
-    } else if (w.artificial_viscosity_in_soil != "full" &&
-               w.artificial_viscosity_in_soil != "drag_limited") {
-      throw std::invalid_argument(
-          "water.artificial_viscosity_in_soil: expected drag_limited or full, got '" +
-          w.artificial_viscosity_in_soil + "'");
+    } else {
+      scene::checked_choice("water.artificial_viscosity_in_soil", w.artificial_viscosity_in_soil,
+                            {"drag_limited", "full"});
     }
     p.gravity = sph::to_vec<D>(s.run.gravity, "run.gravity");
-    if (w.wall_condition != "no_slip" && w.wall_condition != "free_slip") {
-      throw std::invalid_argument("water.wall_condition: expected no_slip or free_slip, got '" +
-                                  w.wall_condition + "'");
-    }
-    p.no_slip = w.wall_condition == "no_slip";
+    p.no_slip = scene::checked_choice("water.wall_condition", w.wall_condition,
+                                      {"no_slip", "free_slip"}) == "no_slip";
     p.artificial_at_walls = on("artificial_viscosity_at_walls");
     p.density_filter_every = on("shepard_density_filter") ? w.density_filter_every : 0;
     p.density_diffusion = on("density_diffusion") ? w.density_diffusion : 0.0;
@@ -96,12 +92,8 @@ struct WaterParams : sph::ParticleSpacing {  // dp, h, volume
     p.viscous_coefficient = s.run.viscous_coefficient;
     p.hydrostatic_initial = w.hydrostatic_initial;
     p.particle_gradient = s.run.kernel_gradient == "particle";
-    if (w.pressure_gradient_in_soil != "symmetric" &&
-        w.pressure_gradient_in_soil != "hydrostatic_difference") {
-      throw std::invalid_argument(
-          "water.pressure_gradient_in_soil: expected symmetric or hydrostatic_difference, got '" +
-          w.pressure_gradient_in_soil + "'");
-    }
+    scene::checked_choice("water.pressure_gradient_in_soil", w.pressure_gradient_in_soil,
+                          {"symmetric", "hydrostatic_difference"});
     p.hydrostatic_difference_in_soil = on("pressure_gradient_hydrostatic_difference_in_soil");
     p.drag_share_rate = ArtificialViscosity::kernel_damping_rate(w.alpha, w.sound_speed, p.h, D);
     return p;

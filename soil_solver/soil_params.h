@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "porous/submerged_density.h"
+#include "scene/choice.h"
 #include "scene/scene.h"
 #include "scene/term_registry.h"
 #include "soil_solver/artificial_stress.h"
@@ -84,11 +85,8 @@ struct SoilParams : sph::ParticleSpacing {  // dp, h, volume
     p.viscosity = on("artificial_viscosity") ? SoilArtificialViscosity{soil.alpha, soil.beta, p.h}
                                              : SoilArtificialViscosity{0.0, 0.0, p.h};
     p.artificial_stress = {soil.artificial_stress_epsilon, soil.artificial_stress_exponent};
-    if (soil.wall_condition != "no_slip" && soil.wall_condition != "free_slip") {
-      throw std::invalid_argument("soil.wall_condition: expected no_slip or free_slip, got '" +
-                                  soil.wall_condition + "'");
-    }
-    p.no_slip = soil.wall_condition == "no_slip";
+    p.no_slip = scene::checked_choice("soil.wall_condition", soil.wall_condition,
+                                      {"no_slip", "free_slip"}) == "no_slip";
     p.geostatic_initial = on("geostatic_initial_stress");
     p.damping_duration = on("damping_stage") ? soil.damping_duration : 0.0;
     p.damping_coefficient = soil.damping_coefficient;
