@@ -5,14 +5,12 @@
 #include <stdexcept>
 
 #include "fluid_solver/water_solver.h"
-#include "sph/checkpoint_arrays.h"
 
 namespace porosph::water {
 
 template <int D>
 void WaterSolver<D>::write_checkpoint(io::CheckpointWriter& out) {
-  sph::write_particle_arrays(out, particles_);
-  scalars_.write(out, D);
+  this->write_core_checkpoint(out);
   out.set("born_count", static_cast<std::int64_t>(born_count_));
   out.set("inflow_mass", inflow_mass_);
   out.set("next_id", next_id_);
@@ -24,13 +22,10 @@ void WaterSolver<D>::write_checkpoint(io::CheckpointWriter& out) {
 
 template <int D>
 void WaterSolver<D>::restore_checkpoint(const io::CheckpointReader& in) {
-  neighbours_.invalidate();
-  scalars_.read(in, D);  // first: throws for another dimension before anything else changes
-  sph::read_particle_arrays(in, particles_);
+  this->read_core_checkpoint(in);
   born_count_ = static_cast<std::uint64_t>(in.get_i64("born_count"));
   inflow_mass_ = in.get_f64("inflow_mass");
   next_id_ = in.get_i64("next_id");
-  interaction_fresh_ = false;  // a checkpoint is taken after advance()
   viscosity_cut_nonzero_ =
       std::any_of(particles_.viscosity_cut.begin(), particles_.viscosity_cut.end(),
                   [](double cut) { return cut > 0.0; });

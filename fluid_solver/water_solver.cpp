@@ -199,19 +199,13 @@ void WaterSolver<D>::set_drag_rate(const std::vector<double>& rate) {
 template <int D>
 void WaterSolver<D>::advance(double dt) {
   StopWatch watch(physics_seconds_);
-  WaterParticles<D>& P = particles_;
-  if (!interaction_fresh_ &&
-      scalars_.interaction_nonzero) {  // none this step, nor in next step's eq. 21
-    std::fill(P.interaction.begin(), P.interaction.end(), sph::Vec<D>::Zero());
-    scalars_.interaction_nonzero = false;
-  }
-  interaction_fresh_ = false;
+  this->drop_stale_interaction();  // none this step, nor in the next step's eq. 21
   book_.clear();
   if (!damping_.active(scalars_.time)) integrate(dt);  // else the water waits (sph/damping_stage.h)
   moving_walls_.move(particles_, dt);
   scalars_.time += dt;
   ++scalars_.step;
-  remove_expired_walls();
+  this->remove_expired_walls();
 }
 
 template <int D>
@@ -304,8 +298,7 @@ void WaterSolver<D>::remove_leaving_particles() {
                          open_.above_level(P.position[a]);
     book_[outflow ? kWaterOutflow : kWaterReservoir] -= P.mass[a] * P.velocity[a];
   };
-  scalars_.removed_count += sph::remove_free_particles(particles_, leaving, keep_scratch_,
-                                                       scalars_.outflow_mass, removing);
+  this->remove_free_particles_where(leaving, removing);
 }
 
 template class WaterSolver<2>;

@@ -108,14 +108,10 @@ class WaterSolver : public sph::ParticleSolverCore<D, WaterParticles<D>> {
   const sph::DampingStage& damping_stage() const { return damping_; }
 
  private:
-  using Core::interaction_fresh_;
-  using Core::keep_scratch_;
   using Core::neighbours_;
   using Core::overlap_index_;
   using Core::particles_;
-  using Core::remove_expired_walls;
   using Core::scalars_;
-  using Core::terms_;
 
   template <class Kernel>
   void compute_rates_with(const Kernel& kernel);

@@ -4,14 +4,12 @@
 #include <stdexcept>
 
 #include "soil_solver/soil_solver.h"
-#include "sph/checkpoint_arrays.h"
 
 namespace porosph::soil {
 
 template <int D>
 void SoilSolver<D>::write_checkpoint(io::CheckpointWriter& out) {
-  sph::write_particle_arrays(out, particles_);
-  scalars_.write(out, D);
+  this->write_core_checkpoint(out);
   out.set("damping_released", static_cast<std::int64_t>(damping_.released()));
   out.set("saturation_set", static_cast<std::int64_t>(saturation_set_));
   book_.write(out);  // the next state reports the step before the checkpoint
@@ -19,11 +17,8 @@ void SoilSolver<D>::write_checkpoint(io::CheckpointWriter& out) {
 
 template <int D>
 void SoilSolver<D>::restore_checkpoint(const io::CheckpointReader& in) {
-  neighbours_.invalidate();
-  scalars_.read(in, D);  // first: throws for another dimension before anything else changes
-  sph::read_particle_arrays(in, particles_);
+  this->read_core_checkpoint(in);
   damping_.set_released(in.get_i64("damping_released") != 0);
-  interaction_fresh_ = false;  // a checkpoint is taken after advance()
   saturation_set_ = in.get_i64("saturation_set") != 0;
   book_.read(in);
 }

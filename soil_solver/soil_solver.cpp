@@ -214,12 +214,7 @@ void SoilSolver<D>::set_saturation(const std::vector<double>& saturation) {
 template <int D>
 void SoilSolver<D>::advance(double dt) {
   SoilParticles<D>& P = particles_;
-  if (!interaction_fresh_ && scalars_.interaction_nonzero) {
-    std::fill(P.interaction.begin(), P.interaction.end(), sph::Vec<D>::Zero());
-    fixed_interaction_.clear();
-    scalars_.interaction_nonzero = false;
-  }
-  interaction_fresh_ = false;
+  if (this->drop_stale_interaction()) fixed_interaction_.clear();
   const bool damping = damping_.active(scalars_.time);  // sph/damping_stage.h
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
   const double inv_h2 = 1.0 / (params_.h * params_.h);
@@ -262,7 +257,7 @@ void SoilSolver<D>::advance(double dt) {
     for (std::int64_t i = 0; i < n; ++i) P.velocity[i].setZero();
   }
   remove_particles_outside();
-  remove_expired_walls();
+  this->remove_expired_walls();
 }
 
 template <int D>
@@ -287,8 +282,7 @@ void SoilSolver<D>::remove_particles_outside() {
   const auto removing = [this, &P](std::size_t i) {  // its momentum leaves with it
     book_[kSoilOutflow] -= (P.weight_ratio[i] * P.mass[i]) * P.velocity[i];
   };
-  scalars_.removed_count += sph::remove_free_particles(particles_, outside, keep_scratch_,
-                                                       scalars_.outflow_mass, removing);
+  this->remove_free_particles_where(outside, removing);
 }
 
 template <int D>

@@ -98,18 +98,16 @@ class SoilSolver : public sph::ParticleSolverCore<D, SoilParticles<D>> {
   const SoilParams<D>& params() const { return params_; }
 
  private:
-  using Core::interaction_fresh_;
-  using Core::keep_scratch_;
   using Core::neighbours_;
   using Core::overlap_index_;
   using Core::particles_;
-  using Core::remove_expired_walls;
   using Core::scalars_;
-  using Core::terms_;
 
+  /// Every free particle's stress over dt from its velocity gradient (seed eq. 6, 12a/12b;
+  /// stress_update.h).
+  void update_stresses(double dt);
   template <class Kernel>
   void compute_rates_with(const Kernel& kernel);
-  void update_stresses(double dt);
   void remove_particles_outside();
   double evaluate(const sph::PreparedObservable<D>& o, const sph::ParticleView<D>& view) const;
 

@@ -15,6 +15,8 @@
 #include <utility>
 #include <vector>
 
+#include "io/checkpoint_file.h"
+#include "sph/checkpoint_arrays.h"
 #include "sph/neighbour_list.h"
 #include "sph/particle_removal.h"
 #include "sph/solver_scalars.h"
@@ -69,11 +71,49 @@ class ParticleSolverCore {
     scalars_.interaction_nonzero = true;
   }
 
+  /// The start of advance(): when no add_interaction() came since the last advance, the
+  /// interaction of an earlier step is zeroed (it acts neither in this step nor in the next
+  /// step's eq. 21) and true is returned, so the solver can drop what it kept of it too.
+  bool drop_stale_interaction() {
+    const bool stale = !interaction_fresh_ && scalars_.interaction_nonzero;
+    if (stale) {
+      std::fill(particles_.interaction.begin(), particles_.interaction.end(), Vec<D>::Zero());
+      scalars_.interaction_nonzero = false;
+    }
+    interaction_fresh_ = false;
+    return stale;
+  }
+
+  /// Removes the free particles for which leaves(i) holds (particle_removal.h), counting them in
+  /// removed_count and their mass in outflow_mass; removing(i) sees each before it goes.
+  template <class Leaves, class Removing>
+  void remove_free_particles_where(const Leaves& leaves, const Removing& removing) {
+    scalars_.removed_count +=
+        remove_free_particles(particles_, leaves, keep_scratch_, scalars_.outflow_mass, removing);
+  }
+
   /// Removes the fixed particles whose time has come (a wall's remove_at; particle_removal.h).
   void remove_expired_walls() {
     if (scalars_.next_wall_removal < 0.0 || scalars_.time < scalars_.next_wall_removal) return;
     scalars_.next_wall_removal =
         remove_expired_fixed_particles(particles_, scalars_.time, keep_scratch_);
+  }
+
+  /// The core's part of write_checkpoint(): every particle array (checkpoint_arrays.h), then the
+  /// step scalars. The solver adds its own scalars after it.
+  void write_core_checkpoint(io::CheckpointWriter& out) {
+    write_particle_arrays(out, particles_);
+    scalars_.write(out, D);
+  }
+  /// The core's part of restore_checkpoint(): the step scalars first (they throw for another
+  /// dimension before anything else changes), then the particle arrays; the neighbour list is
+  /// rebuilt by the next compute_rates(), and no interaction is pending (a checkpoint is taken
+  /// after advance()).
+  void read_core_checkpoint(const io::CheckpointReader& in) {
+    neighbours_.invalidate();
+    scalars_.read(in, D);
+    read_particle_arrays(in, particles_);
+    interaction_fresh_ = false;
   }
 
   Particles particles_;
