@@ -86,6 +86,8 @@ void WaterSolver<D>::compute_rates_with(const Kernel& kernel) {
   moving_walls_.measure_forces(neighbours_, kernel, particles_, params_.shifting_on() ? -1.0 : 1.0);
   if (params_.shifting_on()) {
     shifting_.compute(neighbours_, kernel, params_.dp, r.max_speed, particles_);
+    shifting_.add_to_continuity(neighbours_, kernel, params_.particle_shifting, params_.h,
+                                particles_);
   }
   scalars_.limits = sph::time_step_limits(params_.h, params_.eos.c0(), r.max_speed,
                                           params_.mu / params_.eos.rho0(), r.max_total_acceleration,

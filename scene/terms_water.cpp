@@ -188,8 +188,9 @@ void add_water_terms(std::vector<TermSpec>& t) {
                 .doc("A of the Fickian particle shifting of Lind et al. (2012) with the "
                      "speed scale of Sun et al. (2017): after each step a water particle "
                      "moves by -A h U_max dt grad C (C the particle concentration, with "
-                     "Monaghan's tensile term, U_max the largest water speed), velocity and "
-                     "density unchanged (fluid_solver/particle_shifting.h); keeps the "
+                     "Monaghan's tensile term, U_max the largest water speed), velocity "
+                     "unchanged; the continuity equation sees the shift, so the density follows "
+                     "the particles' volume (fluid_solver/particle_shifting.h); keeps the "
                      "particles uniform in strained flows; 0 switches it off. No "
                      "free-surface treatment: confined or periodic water only.")}));
   t.push_back(term("walls_no_slip",

@@ -13,13 +13,9 @@
 namespace porosph::testing {
 namespace {
 
-// Taylor-Green vortex at Re = 100 at dp = L/50 and L/100 (~3 s and ~20 s on one core). Measured
-// decay-rate errors with the lattice-normalised gradient: +5.91 % and +3.73 % (plain kernel:
-// +5.49 % and +2.92 %: its Morris Laplacian was 1.9 % weak on the lattice, which hid part of an
-// excess dissipation from elsewhere; docs/verification.md); without particle shifting +125 % (the
-// lattice breaks down at t ~ 0.1 s). Bounds: the finer level within 4.5 % (the measured 3.73 % with
-// a margin for the OpenMP summation order; the 2 % is NOT met at these levels), and the
-// error must fall with refinement (a verdict whose error grows fails).
+// Taylor-Green vortex at Re = 100 at dp = L/50 and L/100 (~3 s and ~20 s on one core): the
+// kinetic-energy decay rate against 4 nu k^2, and the mean density (docs/verification.md). Without
+// particle shifting the rate is +125 % off (the lattice breaks down at t ~ 0.1 s).
 TEST(VerificationCases, TaylorGreenDecayRateConverges) {
   // Each run's check before the next run (both use the case's run directory).
   const auto coarse = run_case("taylor_green", {"run.dp=0.02"});
@@ -29,23 +25,29 @@ TEST(VerificationCases, TaylorGreenDecayRateConverges) {
   ASSERT_EQ(fine.result.exit_code, 0) << fine.result.output;
   const auto f = validation::check_taylor_green(fine.out);
   EXPECT_NEAR(c.rate_analytic, 4 * 0.01 * 4 * M_PI * M_PI, 1e-12);
-  // Measured (2026-12-04, viscous terms at v^{n-1} on Verlet steps, difference-form pressure
-  // gradient with shifting; docs/verification.md): -2.19 % at dp 0.02, +0.44 % at dp 0.01 (were
-  // +5.91 / +3.73 %). Bounds: the 2 % at the finer level with room for platform noise
-  // (1 %), 3 % at the coarse one; the symmetric pressure form's +3.7 % fails both.
-  EXPECT_LT(std::abs(c.rel_error), 0.03) << "rate " << c.rate_simulated;
-  EXPECT_LT(std::abs(f.rel_error), 0.01) << "rate " << f.rate_simulated;
+  // Measured (2026-12-05, the continuity equation sees the particle shift; docs/verification.md):
+  // +3.49 % at dp 0.02, +1.00 % at dp 0.01 (order 1.8; before: -2.14 / +0.44 %, whose sign turn
+  // came from a density drift). Bounds: the 2 % at the finer level with room for platform
+  // noise (1.5 %), 4.5 % at the coarse one; the symmetric pressure form's +5.9 / +3.7 % fails
+  // both. The error must fall with refinement.
+  EXPECT_LT(std::abs(c.rel_error), 0.045) << "rate " << c.rate_simulated;
+  EXPECT_LT(std::abs(f.rel_error), 0.015) << "rate " << f.rate_simulated;
   EXPECT_LT(std::abs(f.rel_error), std::abs(c.rel_error));
-  // ln E stays on a line (an exponential decay, no breakdown): measured 0.019 and 0.0064.
-  EXPECT_LT(f.fit_residual, 0.01);
+  // The box's volume is fixed, so its mean density is rho0: measured +0.149 % / +0.083 % over the
+  // window (+2.32 / +0.96 % while the continuity equation did not see the shift). Bound 0.5 %.
+  EXPECT_LT(std::abs(c.density_drift), 0.005);
+  EXPECT_LT(std::abs(f.density_drift), 0.005);
+  // ln E stays on a line (an exponential decay; a breakdown of the lattice gives ~1): measured
+  // 0.011 at dp 0.01 (acoustic noise of the particle disorder, 0.0018 at dp 0.005).
+  EXPECT_LT(f.fit_residual, 0.02);
   EXPECT_NEAR(f.energy0, f.energy0_analytic, 1e-3 * f.energy0_analytic);
 }
 
 // Every laminar viscosity law (water.laminar_viscosity, fluid_solver/laminar_viscosity.h) on the
 // Taylor-Green vortex at dp = L/50 (~3 s each): a law that is a consistent discretisation of
-// mu lap v decays the vortex at the rate 2 nu k^2 like the Morris term (measured -2.19 % at this
-// resolution, above). Bound 3 %, the Morris term's at dp 0.02; a law with a wrong factor of 2 or
-// a wrong density weighting would be off by tens of percent.
+// mu lap v decays the vortex at the rate 2 nu k^2 like the Morris term (measured +3.49 % at this
+// resolution, above). Bound 4.5 %, the Morris term's at dp 0.02; a law with a wrong factor of 2
+// or a wrong density weighting would be off by tens of percent.
 TEST(VerificationCases, TaylorGreenDecaysAtTheRateOfEveryLaminarViscosityLaw) {
   const scene::SceneSchema schema = scene::make_scene_schema();
   const scene::KeySpec* key = schema.find_key("water.laminar_viscosity");
@@ -56,7 +58,7 @@ TEST(VerificationCases, TaylorGreenDecaysAtTheRateOfEveryLaminarViscosityLaw) {
         run_case("taylor_green", {"run.dp=0.02", "water.laminar_viscosity=\"" + law + "\""});
     ASSERT_EQ(run.result.exit_code, 0) << law << ": " << run.result.output;
     const auto c = validation::check_taylor_green(run.out);
-    EXPECT_LT(std::abs(c.rel_error), 0.03) << law << ": rate " << c.rate_simulated;
+    EXPECT_LT(std::abs(c.rel_error), 0.045) << law << ": rate " << c.rate_simulated;
     std::printf("laminar viscosity %s: decay rate error %+.2f %%\n", law.c_str(),
                 100.0 * c.rel_error);
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -119,6 +120,18 @@ TaylorGreenCheck check_taylor_green(const std::string& run_dir) {
   }
   if (x.size() < 5) throw std::runtime_error(run_dir + ": fewer than 5 outputs in the fit window");
   c.samples = x.size();
+  c.density_drift = std::numeric_limits<double>::quiet_NaN();
+  if (series.columns.count("mean_density") != 0) {
+    const auto& density = series.column("mean_density");
+    double sum = 0.0;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      if (t[i] < c.window_start * (1 - 1e-9) || t[i] > c.window_end * (1 + 1e-9)) continue;
+      sum += density[i];
+      ++count;
+    }
+    c.density_drift = sum / static_cast<double>(count) / rho0 - 1.0;
+  }
   c.rate_simulated = -least_squares_slope(x, y, &c.fit_residual);
   c.rel_error = (c.rate_simulated - c.rate_analytic) / c.rate_analytic;
   return c;

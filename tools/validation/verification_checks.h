@@ -25,6 +25,9 @@ struct TaylorGreenCheck {
   double rel_error = 0;                      ///< (simulated - analytic) / analytic
   double fit_residual = 0;                   ///< max |ln E - fit| over the window
   double energy0 = 0, energy0_analytic = 0;  ///< E(0) [J/m] and rho0 U^2 A / 4
+  /// Mean over the window of the observable `mean_density` / rho0 - 1 (NaN when the run has no
+  /// such observable): the box's volume is fixed, so the mean density must stay at rho0.
+  double density_drift = 0;
   double wall_seconds = 0;                   ///< of the run (coupler)
   bool met() const;
 };

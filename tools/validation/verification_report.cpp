@@ -31,10 +31,11 @@ int report_taylor_green(const TaylorGreenCheck& c) {
       "E(0) = %.6g J/m (analytic rho0 U^2 A / 4 = %.6g)\n"
       "kinetic-energy decay rate, fit of ln E over t = %.3g .. %.3g s (%zu outputs): %.5f 1/s;"
       " analytic 4 nu k^2 = %.5f 1/s; error %+.2f%% (target 2%%)\n"
-      "largest deviation of ln E from the fitted line %.2e; wall time %.1f s\n",
+      "largest deviation of ln E from the fitted line %.2e; mean density over the window"
+      " %+.3f%% from rho0; wall time %.1f s\n",
       c.dp, c.speed, c.wavelength, c.nu, c.speed * c.wavelength / c.nu, c.energy0,
       c.energy0_analytic, c.window_start, c.window_end, c.samples, c.rate_simulated,
-      c.rate_analytic, 100 * c.rel_error, c.fit_residual, c.wall_seconds);
+      c.rate_analytic, 100 * c.rel_error, c.fit_residual, 100 * c.density_drift, c.wall_seconds);
   summary("kinetic-energy decay rate", fmt("%.5f 1/s", c.rate_simulated),
           fmt("%.5f 1/s (4 nu k^2)", c.rate_analytic), fmt("%+.2f %%", 100 * c.rel_error), "2 %",
           c.met());
