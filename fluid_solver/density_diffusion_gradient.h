@@ -23,22 +23,28 @@
 #include <vector>
 
 #include "fluid_solver/density_diffusion.h"
+#include "fluid_solver/viscous_level.h"
 #include "fluid_solver/water_particles.h"
 #include "sph/neighbour_list.h"
 
 namespace porosph::water {
 
-/// Fills `gradient` (size n_free; grown only when too small) with G_a of every water particle;
-/// P.diffusion_state must be filled (fill_diffusion_states).
-/// P.diffusion_state of every water particle from its density.
+/// P.diffusion_state of every water particle from its density: rho^n (Current; Euler steps) or the
+/// stored rho^{n-1} (Previous; Verlet steps), for the reason the viscous terms of a Verlet step
+/// act on v^{n-1} (viscous_level.h): the diffusion is a damping term of the continuity equation.
 template <int D>
-void fill_diffusion_states(const DensityDiffusion<D>& diffusion, WaterParticles<D>& P) {
+void fill_diffusion_states(const DensityDiffusion<D>& diffusion, WaterParticles<D>& P,
+                           ViscousLevel level = ViscousLevel::Current) {
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
   P.diffusion_state.resize(P.n_free);
+  const double* density =
+      level == ViscousLevel::Previous ? P.density_previous.data() : P.density.data();
 #pragma omp parallel for schedule(static)
-  for (std::int64_t a = 0; a < n; ++a) P.diffusion_state[a] = diffusion.state(P.density[a]);
+  for (std::int64_t a = 0; a < n; ++a) P.diffusion_state[a] = diffusion.state(density[a]);
 }
 
+/// Fills `gradient` (size n_free; grown only when too small) with G_a of every water particle;
+/// P.diffusion_state must be filled (fill_diffusion_states).
 template <int D, class Kernel>
 void departure_gradients(const sph::NeighbourList<D>& nl, const Kernel& kernel,
                          const DensityDiffusion<D>& diffusion, const WaterParticles<D>& P,

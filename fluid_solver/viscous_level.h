@@ -24,9 +24,12 @@
 // v^{n-1} is the "folded" level of verlet_step_coupled (v^{n-1} plus the coupling impulse): the
 // level the step starts from.
 //
-// Not (yet) done for the density diffusion, a damping term of the continuity equation with
-// lambda_max dt = 5.68 delta C_cfl c0 / (c0 + |v|) ~ 0.10 at delta = 0.1 at every resolution: the N
-// = 40 cycle keeps it stable (spectral radius 0.18), but euler_every = 100 does not.
+// The density diffusion (density_diffusion.h) is a damping term of the continuity equation with
+// lambda_max dt = 5.68 delta C_cfl c0 / (c0 + |v|) ~ 0.10 at delta = 0.1 at every resolution. At
+// rho^n the N = 40 cycle kept it stable (spectral radius 0.18), but euler_every = 100 did not, nor
+// delta = 0.2 (the Taylor-Green vortex blew up at t ~ 0.1 s at L/50 and L/100). Since 2026-12-05 a
+// Verlet step evaluates it at the stored rho^{n-1} too (fill_diffusion_states), a forward step of
+// 2 dt for it, stable while lambda dt <= 1: delta up to 1 / (5.68 C_cfl) = 0.88 at run.cfl = 0.2.
 #pragma once
 
 namespace porosph::water {

@@ -52,7 +52,7 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
   const double av_cut_weight = prm.artificial.damping_rate > 0.0 ? 1.0 : 0.0;
   const DensityDiffusion<D> diffusion(prm.density_diffusion, prm.h, prm.eos, g);
   if constexpr (kDiffusion) {
-    fill_diffusion_states(diffusion, P);
+    fill_diffusion_states(diffusion, P, level);  // rho^{n-1} on a Verlet step (viscous_level.h)
     if (prm.diffusion_linear) {
       departure_gradients(nl, kernel, diffusion, P, P.departure_gradient);
     } else {

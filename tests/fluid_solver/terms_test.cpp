@@ -217,6 +217,37 @@ TEST(WaterTerms, ViscousTermsOfAVerletStepActOnThePreviousLevel) {
   EXPECT_EQ(s.max_speed, max_speed);
 }
 
+TEST(WaterTerms, DensityDiffusionOfAVerletStepActsOnThePreviousLevel) {
+  // viscous_level.h, fill_diffusion_states: at ViscousLevel::Previous the density diffusion takes
+  // rho^{n-1} (density_previous). A random density field with a uniform previous level (no
+  // gravity): the lagged diffusion is exactly zero, so the density rate is the continuity term
+  // alone, the one of delta = 0; at the current level the diffusion acts.
+  std::mt19937 rng(13);
+  auto P = random_cloud(200, 0.0, rng);
+  std::fill(P.density_previous.begin(), P.density_previous.end(), 1001.0);
+  WaterParams<2> params;
+  params.h = 0.006;
+  params.eta2 = 0.01 * params.h * params.h;
+  params.gravity = Vec2::Zero();
+  sph::NeighbourList<2> list;
+  list.build(P.position.data(), P.size(), P.size(), 2.0 * params.h, sph::DomainBox<2>{});
+  const sph::CubicSpline<2> kernel(params.h);
+  auto without = P;
+  compute_water_rates(list, kernel, params, without, ViscousLevel::Previous);
+  params.density_diffusion = 0.1;
+  auto lagged = P, current = P;
+  compute_water_rates(list, kernel, params, lagged, ViscousLevel::Previous);
+  compute_water_rates(list, kernel, params, current, ViscousLevel::Current);
+  double change = 0.0, largest = 0.0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    EXPECT_NEAR(lagged.density_rate[i], without.density_rate[i],
+                1e-12 * (1.0 + std::abs(without.density_rate[i])));
+    change = std::max(change, std::abs(current.density_rate[i] - without.density_rate[i]));
+    largest = std::max(largest, std::abs(without.density_rate[i]));
+  }
+  EXPECT_GT(change, 1e-2 * largest);  // the current level's diffusion is real
+}
+
 TEST(WaterTerms, PressureDifferenceFormWithShiftingIsZerothOrderConsistent) {
   // pressure_force.h: with particle shifting on, a uniform pressure exerts no force on a
   // disordered cloud (difference form); the symmetric form pushes every particle by
