@@ -28,7 +28,7 @@ struct TaylorGreenCheck {
   /// Mean over the window of the observable `mean_density` / rho0 - 1 (NaN when the run has no
   /// such observable): the box's volume is fixed, so the mean density must stay at rho0.
   double density_drift = 0;
-  double wall_seconds = 0;                   ///< of the run (coupler)
+  double wall_seconds = 0;  ///< of the run (coupler)
   bool met() const;
 };
 
