@@ -96,9 +96,10 @@ struct ParticleShiftingGradients {
     }
   }
 
-  /// Shifts water particle a, which has just moved over dt, by -coefficient h U_max dt grad C_a.
-  void shift(double coefficient, double h, double dt, std::size_t a, Vec& position) const {
-    position -= (coefficient * h * speed * dt) * concentration[a];
+  /// Shifts water particle a, which has just moved over dt, by u_a dt (velocity(); nothing for a
+  /// zone particle).
+  void shift(double coefficient, double h, double dt, std::size_t a, WaterParticles<D>& P) const {
+    P.position[a] += dt * velocity(coefficient, h, a, P);
   }
 };
 

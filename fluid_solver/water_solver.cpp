@@ -257,9 +257,7 @@ void WaterSolver<D>::integrate(double dt) {
                                   P.acceleration[a], P.interaction[a], dt, dt_previous_, euler);
     }
     sph::verlet_step_scalar(P.density[a], P.density_previous[a], P.density_rate[a], dt, euler);
-    if (shifting && P.zone[a] < 0) {
-      shifting_.shift(params_.particle_shifting, params_.h, dt, a, P.position[a]);
-    }
+    if (shifting) shifting_.shift(params_.particle_shifting, params_.h, dt, a, P);
     box_.wrap(P.position[a]);
   }
   // The particles born are inserted at the end of the free range: their momentum is booked.

@@ -52,8 +52,8 @@ TEST(ParticleShifting, TheDensityFollowsTheShiftAsTheSummationDensityDoes) {
   // A central difference over shifts of +dt and -dt.
   auto forward = P, backward = P;
   for (std::size_t a = 0; a < P.size(); ++a) {
-    shifting.shift(coefficient, h, dt, a, forward.position[a]);
-    shifting.shift(coefficient, h, -dt, a, backward.position[a]);
+    shifting.shift(coefficient, h, dt, a, forward);
+    shifting.shift(coefficient, h, -dt, a, backward);
   }
   double largest = 0.0, worst = 0.0;
   for (std::size_t a = 0; a < P.size(); ++a) {

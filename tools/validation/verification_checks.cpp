@@ -111,27 +111,21 @@ TaylorGreenCheck check_taylor_green(const std::string& run_dir) {
   c.energy0 = energy.front();
   c.energy0_analytic = 0.25 * rho0 * c.speed * c.speed * (hi[0] - lo[0]) * (hi[1] - lo[1]);
 
+  const bool has_density = series.columns.count("mean_density") != 0;
+  const std::vector<double>* density = has_density ? &series.column("mean_density") : nullptr;
   std::vector<double> x, y;
+  double density_sum = 0.0;
   for (std::size_t i = 0; i < t.size(); ++i) {
     if (t[i] < c.window_start * (1 - 1e-9) || t[i] > c.window_end * (1 + 1e-9)) continue;
     if (!(energy[i] > 0)) throw std::runtime_error(run_dir + ": kinetic energy not positive");
     x.push_back(t[i]);
     y.push_back(std::log(energy[i]));
+    if (density) density_sum += (*density)[i];
   }
   if (x.size() < 5) throw std::runtime_error(run_dir + ": fewer than 5 outputs in the fit window");
   c.samples = x.size();
-  c.density_drift = std::numeric_limits<double>::quiet_NaN();
-  if (series.columns.count("mean_density") != 0) {
-    const auto& density = series.column("mean_density");
-    double sum = 0.0;
-    std::size_t count = 0;
-    for (std::size_t i = 0; i < t.size(); ++i) {
-      if (t[i] < c.window_start * (1 - 1e-9) || t[i] > c.window_end * (1 + 1e-9)) continue;
-      sum += density[i];
-      ++count;
-    }
-    c.density_drift = sum / static_cast<double>(count) / rho0 - 1.0;
-  }
+  c.density_drift = density ? density_sum / static_cast<double>(x.size()) / rho0 - 1.0
+                            : std::numeric_limits<double>::quiet_NaN();
   c.rate_simulated = -least_squares_slope(x, y, &c.fit_residual);
   c.rel_error = (c.rate_simulated - c.rate_analytic) / c.rate_analytic;
   return c;
