@@ -82,7 +82,7 @@ InitialParticles<D> initial_particles(const scene::Scene& s, const WaterParams<D
     P.velocity[i] = inflow ? zones.velocity(P.zone[i], 0.0) : Vec::Zero();
     P.velocity_previous[i] = P.velocity[i];
     P.acceleration[i] = P.interaction[i] = P.wall_velocity[i] = Vec::Zero();
-    P.viscosity_cut[i] = 0.0;
+    P.viscosity_cut[i] = P.drag_rate[i] = 0.0;
     P.density[i] = params.eos.rho0();
     P.pressure[i] = P.density_rate[i] = 0.0;
     P.sound_speed[i] = params.eos.c0();

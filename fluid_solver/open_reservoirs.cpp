@@ -262,7 +262,7 @@ std::size_t OpenReservoirs<D>::renew(WaterParticles<D>& P, double volume, std::i
       born_.position[b] = x;
       born_.velocity[b] = born_.velocity_previous[b] = u;
       born_.acceleration[b] = born_.interaction[b] = born_.wall_velocity[b] = Vec::Zero();
-      born_.viscosity_cut[b] = 0.0;
+      born_.viscosity_cut[b] = born_.drag_rate[b] = 0.0;
       born_.density[b] = born_.density_previous[b] = rho;
       born_.density_rate[b] = 0.0;
       born_.pressure[b] = p;

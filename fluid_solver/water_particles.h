@@ -25,6 +25,10 @@ struct WaterParticles {
   /// particle, from the drag rate the coupler sent with the last command (artificial_viscosity.h):
   /// 0 in free water, for walls and after any resize (array resizes fill 0).
   std::vector<double> viscosity_cut;
+  /// The seepage drag rate lambda_a [1/s] the coupler sent with the last command (0 in free
+  /// water, for walls and after any resize): the hydrostatic difference form's weight
+  /// (hydrostatic_difference.h) compares it with its neighbours'.
+  std::vector<double> drag_rate;
   std::vector<double> density, density_previous, density_rate;
   std::vector<double> pressure, sound_speed, mass;
   std::vector<double> remove_at;  ///< walls: removal time [s] (< 0: never); water: -1
@@ -105,7 +109,7 @@ struct WaterParticles {
     fn(p.interaction...), fn(p.wall_velocity...), fn(p.density...), fn(p.density_previous...);
     fn(p.density_rate...), fn(p.pressure...), fn(p.sound_speed...), fn(p.mass...);
     fn(p.remove_at...), fn(p.id...), fn(p.fixed...), fn(p.zone...), fn(p.viscosity_cut...);
-    fn(p.wall_motion...);
+    fn(p.drag_rate...), fn(p.wall_motion...);
   }
 
   sph::PermutationScratch<Vec, double, std::int64_t, std::int32_t, std::uint8_t> scratch_;

@@ -39,6 +39,7 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
   const double* c = P.sound_speed.data();
   const double* m = P.mass.data();
   const double* cut = P.viscosity_cut.data();     // artificial_viscosity.h: 0 without soil
+  const double* drag_rate = P.drag_rate.data();   // lambda_a: 0 without soil
   const double* scale = P.gradient_scale.data();  // particle_gradient.h: 1 unless "particle"
   const double eta2 = prm.eta2;
   const LaminarViscosityConstants laminar{prm.mu, prm.eos.rho0()};
@@ -70,8 +71,9 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
     const double rho_a = rho[a], inv_rho_a = inv_rho[a], p_a = p[a], c_a = c[a];
     Vec acc = Vec::Zero();
     // Inside soil the pressure term is summed in both forms and blended after the loops.
-    const bool in_soil = hydrostatic_difference && cut[a] > 0.0;
+    const bool in_soil = hydrostatic_difference && drag_rate[a] > 0.0;
     SoilPressureSums<D> soil_pressure;
+    double neighbour_drag_rate = drag_rate[a];  // the largest lambda over a and its neighbours
     double divergence = 0.0;
     double diffusion_sum = 0.0;  // D_a / (delta h c0), water neighbours only (density_diffusion.h)
     DiffusionState diffusion_a;
@@ -87,6 +89,7 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
       const Vec pressure_term =
           pressure_acceleration<D>(m[b], pressure_sign * p_a, p[b], inv_rho_a, inv_rho[b], grad_w);
       if (in_soil) {
+        neighbour_drag_rate = std::max(neighbour_drag_rate, drag_rate[b]);
         soil_pressure.add(false, pressure_term, m[b], p_a, p[b], inv_rho_a, inv_rho[b],
                           rho0_g.dot(it->x_ab), volume[b], scaled_factor, it->r, grad_w);
       } else {
@@ -152,7 +155,8 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
     }
     Vec form_residual = Vec::Zero();
     if (in_soil) {
-      const auto split = soil_pressure.split(cut[a], inv_rho_a, rho0_g);
+      const auto split = soil_pressure.split(
+          SoilPressureSums<D>::drag_weight(drag_rate[a], neighbour_drag_rate), inv_rho_a, rho0_g);
       acc += split.total;
       acc_wall += split.walls;
       form_residual = split.residual;

@@ -189,11 +189,14 @@ void WaterSolver<D>::set_drag_rate(const std::vector<double>& rate) {
                                 " values, got " + std::to_string(rate.size()));
   }
   std::vector<double>& cut = particles_.viscosity_cut;
+  std::vector<double>& lambda = particles_.drag_rate;
   std::fill(cut.begin(), cut.end(), 0.0);
+  std::fill(lambda.begin(), lambda.end(), 0.0);
   viscosity_cut_nonzero_ = false;
-  if (!params_.drag_share_on()) return;  // no term uses the drag share
+  if (!params_.drag_share_on()) return;  // no term uses the drag rate
   for (std::size_t i = 0; i < rate.size(); ++i) {
     cut[overlap_index_[i]] = params_.drag_share(rate[i]);
+    lambda[overlap_index_[i]] = std::max(0.0, rate[i]);
     viscosity_cut_nonzero_ = viscosity_cut_nonzero_ || cut[overlap_index_[i]] > 0.0;
   }
 }

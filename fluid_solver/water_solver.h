@@ -58,7 +58,8 @@ class WaterSolver : public sph::ParticleSolverCore<D, WaterParticles<D>> {
   void add_interaction(const std::vector<double>& acceleration);
   /// The seepage drag rates lambda [1/s] of the overlap particles of the last fill_state
   /// (StepCommand.interaction_rate; empty: no drag): they set how much of the artificial
-  /// viscosity the drag replaces in the next compute_rates() (artificial_viscosity.h). Throws
+  /// viscosity the drag replaces in the next compute_rates() (artificial_viscosity.h) and the
+  /// weight of the hydrostatic difference form (hydrostatic_difference.h). Throws
   /// std::invalid_argument on a size mismatch.
   void set_drag_rate(const std::vector<double>& rate);
   /// The soil porosity around the overlap particles of the last fill_state (StepCommand.porosity,

@@ -145,7 +145,8 @@ void add_water_terms(std::vector<TermSpec>& t) {
            .one_of({"symmetric", "hydrostatic_difference"})
            .doc("The pressure gradient of the water inside soil. \"symmetric\": the seed paper's "
                 "form everywhere; \"hydrostatic_difference\": where the seepage drag holds the "
-                "particles (the drag share of water.artificial_viscosity_in_soil) and the kernel "
+                "particles (inside soil, blended in over the soil's surface layer, where the drag "
+                "rises to half the largest among a particle's neighbours) and the kernel "
                 "support is full, the difference form of the departure from still water plus "
                 "rho0 g, exact for still water at any particle arrangement, so that the Darcy flow "
                 "does not pay for the lattice's strain (the vertical seepage is ~30 times as "

@@ -25,7 +25,7 @@ constexpr double kDp = 0.01, kRho0 = 1000.0, kG = 9.81, kDepth = 0.3;
 
 /// Still water on a 30 x 30 lattice jittered by up to 0.03 dp (a lattice that a flow has
 /// strained; tr(L) / D stays above 0.97, a full support), p = rho0 g (depth - y) exactly, rho =
-/// rho0, every particle at drag share 1.
+/// rho0, every particle under the same drag (drag rate 200 1/s, drag weight 1).
 struct StillWaterInSoil {
   WaterParticles<2> P;
   WaterParams<2> params;
@@ -40,6 +40,7 @@ struct StillWaterInSoil {
     P = testing::make_particles<2>(x, x.size(), kRho0, kRho0 * kDp * kDp);
     for (std::size_t i = 0; i < x.size(); ++i) P.pressure[i] = kRho0 * kG * (kDepth - x[i].y());
     std::fill(P.viscosity_cut.begin(), P.viscosity_cut.end(), 1.0);
+    std::fill(P.drag_rate.begin(), P.drag_rate.end(), 200.0);
     params.dp = kDp;
     params.h = 1.2 * kDp;
     params.eta2 = 0.01 * params.h * params.h;
@@ -112,13 +113,17 @@ TEST(HydrostaticDifference, AnIncompleteSupportKeepsTheSymmetricForm) {
 TEST(HydrostaticDifference, TheDepartureFromAntisymmetricPairsIsWhatIsBooked) {
   // Disturb the pressures so that the form's residual is not zero: the water's total internal
   // force sum m (a - g) then equals the booked sum m a_form to round-off, as the external-impulse
-  // ledger needs (water_impulse_book.h, "pressure_form"); with half the share it is halved.
+  // ledger needs (water_impulse_book.h, "pressure_form"), with the full weight everywhere and
+  // with drag rates that vary from particle to particle (weights between 0.2 and 1).
   StillWaterInSoil w;
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> noise(-50.0, 50.0);
   for (double& p : w.P.pressure) p += noise(rng);
-  for (double share : {1.0, 0.5}) {
-    std::fill(w.P.viscosity_cut.begin(), w.P.viscosity_cut.end(), share);
+  std::uniform_real_distribution<double> rate(20.0, 200.0);
+  for (int pass : {0, 1}) {
+    if (pass == 1) {
+      for (double& lambda : w.P.drag_rate) lambda = rate(rng);
+    }
     w.rates(true);
     Vec2 internal = Vec2::Zero(), booked = Vec2::Zero();
     double scale = 0.0;
@@ -128,9 +133,36 @@ TEST(HydrostaticDifference, TheDepartureFromAntisymmetricPairsIsWhatIsBooked) {
       booked += m * w.P.pressure_form_acceleration[i];
       scale += m * (w.P.acceleration[i] - w.params.gravity).norm();
     }
-    EXPECT_GT(booked.norm(), 1e-6 * scale) << share;  // not trivially zero
-    EXPECT_LT((internal - booked).norm(), 1e-12 * scale) << share;
+    EXPECT_GT(booked.norm(), 1e-6 * scale) << pass;  // not trivially zero
+    EXPECT_LT((internal - booked).norm(), 1e-12 * scale) << pass;
   }
+}
+
+TEST(HydrostaticDifference, TheDragWeightRampsOverTheSoilsSurfaceLayerOnly) {
+  using S = SoilPressureSums<2>;
+  EXPECT_EQ(S::drag_weight(0.0, 100.0), 0.0);  // no drag: the symmetric form
+  EXPECT_EQ(S::drag_weight(100.0, 100.0), 1.0);
+  EXPECT_EQ(S::drag_weight(50.0, 100.0), 1.0);  // from half the neighbours' largest drag
+  EXPECT_NEAR(S::drag_weight(10.0, 100.0), 0.2, 1e-15);
+  // Only the ratio counts: the same soil surface at another conductivity gets the same weights.
+  EXPECT_EQ(S::drag_weight(1e-3, 1e-2), S::drag_weight(1e4, 1e5));
+}
+
+TEST(HydrostaticDifference, TheWeightInsideSoilDoesNotFallWithTheSmoothingLength) {
+  // Until 2026-12-06 the weight was the artificial viscosity's drag share min(1, lambda / r_av),
+  // r_av ~ alpha c0 / h: at a drag rate below r_av (the seepage weir at dp 2.5 mm) the symmetric
+  // form came back inside the soil. Now a uniform drag gives the full form whatever r_av: on the
+  // jittered still-water block the interior keeps only round-off, as at drag share 1.
+  StillWaterInSoil w;
+  w.params.artificial = ArtificialViscosity{0.05, 0.0, w.params.h, 0.0};
+  w.params.drag_share_rate = 1e6;  // r_av far above the drag rate of 200 1/s
+  std::fill(w.P.viscosity_cut.begin(), w.P.viscosity_cut.end(), 200.0 / 1e6);
+  w.P.velocity.assign(w.P.size(), Vec2::Zero());
+  w.rates(true);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < w.P.n_free; ++i)
+    if (w.interior(i)) worst = std::max(worst, w.P.acceleration[i].norm());
+  EXPECT_LT(worst, 1e-9 * kG);
 }
 
 TEST(HydrostaticDifference, SceneKeyAndDragShare) {
