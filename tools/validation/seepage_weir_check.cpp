@@ -130,7 +130,8 @@ SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
   const double cell = 0.0025;
   const std::size_t top_cells = static_cast<std::size_t>(std::lround((layer.x1 - layer.x0) / cell));
   std::vector<double> top_sum(top_cells, 0.0), top_count(top_cells, 0.0);
-  double near_sum = 0, near_count = 0;  // the upstream pool within 0.1 m of the weir
+  double near_sum = 0, near_count = 0;            // the upstream pool within 0.1 m of the weir
+  double near_down_sum = 0, near_down_count = 0;  // the downstream pool within 0.1 m of it
   for (const auto& snap : snapshots) {
     if (snap.time < out.window_start - 1e-12) continue;
     const WaterSnapshot s = read_water_snapshot(reader, snap.index);
@@ -154,7 +155,10 @@ SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
                                    static_cast<long>(std::floor(u + dp / cell)));
         for (long k = first; k <= last; ++k) top_sum[k] += head, top_count[k] += 1.0;
       }
-      if (downstream.contains(xi, yi) && yi < top_down - 1.5 * dp) sum_h2 += head, ++n2;
+      if (downstream.contains(xi, yi) && yi < top_down - 1.5 * dp) {
+        sum_h2 += head, ++n2;
+        if (xi < weir.x1 + 0.1) near_down_sum += head, ++near_down_count;
+      }
       if (under.contains(xi, yi)) flux += s.volume(i) * s.v.values[2 * i];
       if (exit.contains(xi, yi)) exit_v += s.v.values[2 * i + 1], ++n_exit;
       for (std::size_t k = 0; k < probe_points.size(); ++k) {
@@ -195,6 +199,8 @@ SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
   const double dh = out.head_upstream - out.head_downstream;
   if (near_count > 0)
     out.upstream_head_near_weir = (near_sum / near_count - out.head_upstream) / dh;
+  if (near_down_count > 0)
+    out.downstream_head_near_weir = (near_down_sum / near_down_count - out.head_downstream) / dh;
   out.discharge_reference = out.conductivity * dh * reference.estimates[0].extrapolated;
   out.discharge_reference_order = reference.estimates[0].order;
   out.exit_gradient_reference = dh * reference.estimates[1].extrapolated;

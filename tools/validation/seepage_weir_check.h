@@ -54,6 +54,9 @@ struct SeepageWeirCheck {
   double discharge_own_heads = 0;
   /// The upstream pool's head within 0.1 m of the weir, from its mean, over dh.
   double upstream_head_near_weir = 0;
+  /// The same for the downstream pool: where most of the water leaves the sand, so a pool that
+  /// stands higher there than its mean (a tilt or a seiche, docs/verification.md) takes discharge.
+  double downstream_head_near_weir = 0;
 
   double discharge_error() const { return discharge / discharge_reference - 1.0; }
   double layer_error() const { return discharge / discharge_own_heads - 1.0; }

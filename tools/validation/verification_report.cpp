@@ -136,8 +136,10 @@ int report_seepage_weir(const SeepageWeirCheck& c) {
               100 * (q_max - q_min) / c.discharge);
   std::printf(
       "the layer alone: FV with the run's own heads 0 .. 2 dp above the layer %.5e m^2/s, SPH"
-      " %+.2f%% from it; the upstream pool within 0.1 m of the weir %+.2f%% of dh from its mean\n",
-      c.discharge_own_heads, 100 * c.layer_error(), 100 * c.upstream_head_near_weir);
+      " %+.2f%% from it; within 0.1 m of the weir the upstream pool %+.2f%% and the downstream"
+      " pool %+.2f%% of dh from their means\n",
+      c.discharge_own_heads, 100 * c.layer_error(), 100 * c.upstream_head_near_weir,
+      100 * c.downstream_head_near_weir);
   std::printf("%8s %8s %12s %12s %9s %10s %10s %9s\n", "x", "y", "p", "p_ref", "p err", "head",
               "head_ref", "err/dh");
   for (const auto& p : c.probes) {
