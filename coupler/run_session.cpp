@@ -4,17 +4,13 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <csignal>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <memory>
 #include <optional>
 #include <set>
-#include <sstream>
-#include <thread>
 
 #include "coupler/checkpoint.h"
 #include "coupler/coupled_step.h"
