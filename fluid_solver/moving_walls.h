@@ -67,7 +67,9 @@ class MovingWalls {
       for (auto it = nl.mid(a); it != nl.end(a); ++it) {
         const std::int32_t k = P.wall_motion[it->b];
         if (k < 0) continue;
-        const Vec grad_w = (kernel.grad_factor(it->r) * P.gradient_scale[a]) * it->x_ab;
+        const Vec grad_w = P.gradient_matrix.empty()
+                               ? Vec((kernel.grad_factor(it->r) * P.gradient_scale[a]) * it->x_ab)
+                               : Vec(kernel.grad_factor(it->r) * (P.gradient_matrix[a] * it->x_ab));
         force_[k] -=
             P.mass[a] * pressure_acceleration<D>(P.mass[it->b], pressure_sign * P.pressure[a],
                                                  P.pressure[it->b], P.inverse_density[a],

@@ -37,6 +37,8 @@ struct WaterParams : sph::ParticleSpacing {  // dp, h, volume
   bool hydrostatic_initial = true;
   /// run.kernel_gradient = "particle": per-particle gradient renormalisation (particle_gradient.h).
   bool particle_gradient = false;
+  /// run.kernel_gradient = "particle_matrix": the matrix form of it (particle_gradient.h).
+  bool particle_gradient_matrix = false;
   /// water.pressure_gradient_in_soil = "hydrostatic_difference" (hydrostatic_difference.h).
   bool hydrostatic_difference_in_soil = false;
   /// r_av of the drag share s_a = min(1, lambda_a / r_av) (artificial_viscosity.h), which the
@@ -92,6 +94,7 @@ struct WaterParams : sph::ParticleSpacing {  // dp, h, volume
     p.viscous_coefficient = s.run.viscous_coefficient;
     p.hydrostatic_initial = w.hydrostatic_initial;
     p.particle_gradient = s.run.kernel_gradient == "particle";
+    p.particle_gradient_matrix = s.run.kernel_gradient == "particle_matrix";
     scene::checked_choice("water.pressure_gradient_in_soil", w.pressure_gradient_in_soil,
                           {"symmetric", "hydrostatic_difference"});
     p.hydrostatic_difference_in_soil = on("pressure_gradient_hydrostatic_difference_in_soil");

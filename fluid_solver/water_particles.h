@@ -48,6 +48,10 @@ struct WaterParticles {
   /// Per water particle: the kernel gradient's renormalisation s_a (particle_gradient.h; 1 unless
   /// run.kernel_gradient = "particle"), filled at the start of each rate evaluation.
   std::vector<double> gradient_scale;
+  /// Per water particle: the kernel gradient's correction matrix C_a (particle_gradient.h) with
+  /// run.kernel_gradient = "particle_matrix", filled at the start of each rate evaluation; empty
+  /// otherwise.
+  std::vector<Eigen::Matrix<double, D, D>> gradient_matrix;
   /// Renormalised gradient of the density diffusion's departure potential (water particles only;
   /// density_diffusion_gradient.h), filled before the pair loop when the diffusion is on.
   std::vector<Vec> departure_gradient;
