@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "fluid_solver/particle_gradient.h"
 #include "fluid_solver/pressure_force.h"
 #include "fluid_solver/water_particles.h"
 #include "scene/scene.h"
@@ -67,9 +68,11 @@ class MovingWalls {
       for (auto it = nl.mid(a); it != nl.end(a); ++it) {
         const std::int32_t k = P.wall_motion[it->b];
         if (k < 0) continue;
-        const Vec grad_w = P.gradient_matrix.empty()
-                               ? Vec((kernel.grad_factor(it->r) * P.gradient_scale[a]) * it->x_ab)
-                               : Vec(kernel.grad_factor(it->r) * (P.gradient_matrix[a] * it->x_ab));
+        const Vec grad_w = ParticleGradient::wall_pair<D>(
+                               P.gradient_scale.data(),
+                               P.gradient_matrix.empty() ? nullptr : P.gradient_matrix.data(), a,
+                               kernel.grad_factor(it->r), it->x_ab, it->r)
+                               .grad_w;
         force_[k] -=
             P.mass[a] * pressure_acceleration<D>(P.mass[it->b], pressure_sign * P.pressure[a],
                                                  P.pressure[it->b], P.inverse_density[a],

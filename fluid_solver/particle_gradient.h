@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "sph/neighbour_list.h"
+#include "sph/vector.h"
 
 namespace porosph::water {
 
@@ -66,6 +67,40 @@ struct ParticleGradient {
     eigen.computeDirect(L, Eigen::EigenvaluesOnly);
     if (!(eigen.eigenvalues().minCoeff() > kMinEigenvalue)) return Mat::Identity();
     return (1.0 - w) * Mat::Identity() + w * L.inverse();
+  }
+
+  /// A pair's corrected kernel gradient and its factor along x_ab (grad_w . x_ab / r^2, what the
+  /// trace of L sums; for the scalar forms grad_w = factor x_ab).
+  template <int D>
+  struct Pair {
+    sph::Vec<D> grad_w;
+    double factor;
+  };
+
+  /// Water pair a, b of `grad_factor` = dW/dr / r and x_ab: (s_a + s_b) / 2 grad W, or with the
+  /// matrix form (`matrix` not null) (C_a + C_b) / 2 grad W.
+  template <int D>
+  static Pair<D> water_pair(const double* scale, const Eigen::Matrix<double, D, D>* matrix,
+                            std::size_t a, std::size_t b, double grad_factor,
+                            const sph::Vec<D>& x_ab, double r) {
+    if (matrix == nullptr) {
+      const double factor = grad_factor * (0.5 * (scale[a] + scale[b]));
+      return {factor * x_ab, factor};
+    }
+    const sph::Vec<D> grad_w = grad_factor * (0.5 * (matrix[a] + matrix[b]) * x_ab);
+    return {grad_w, grad_w.dot(x_ab) / (r * r)};
+  }
+
+  /// Water particle a and wall particle b: s_a grad W, or C_a grad W (above).
+  template <int D>
+  static Pair<D> wall_pair(const double* scale, const Eigen::Matrix<double, D, D>* matrix,
+                           std::size_t a, double grad_factor, const sph::Vec<D>& x_ab, double r) {
+    if (matrix == nullptr) {
+      const double factor = grad_factor * scale[a];
+      return {factor * x_ab, factor};
+    }
+    const sph::Vec<D> grad_w = grad_factor * (matrix[a] * x_ab);
+    return {grad_w, grad_w.dot(x_ab) / (r * r)};
   }
 
   /// s_a of the water particles (the first n_free of the list) into `out` (resized); `volume`

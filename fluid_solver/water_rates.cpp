@@ -41,9 +41,8 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
   const double* cut = P.viscosity_cut.data();     // artificial_viscosity.h: 0 without soil
   const double* drag_rate = P.drag_rate.data();   // lambda_a: 0 without soil
   const double* scale = P.gradient_scale.data();  // particle_gradient.h: 1 unless "particle"
-  // C_a of "particle_matrix" (particle_gradient.h); then scale is 1.
-  const bool matrix = prm.particle_gradient_matrix;
-  const auto* correction = P.gradient_matrix.data();
+  // C_a of "particle_matrix" (particle_gradient.h), null otherwise; with it scale is 1.
+  const auto* correction = prm.particle_gradient_matrix ? P.gradient_matrix.data() : nullptr;
   const double eta2 = prm.eta2;
   const LaminarViscosityConstants laminar{prm.mu, prm.eos.rho0()};
   const ArtificialViscosity av = prm.artificial;
@@ -85,12 +84,10 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
     for (auto it = nl.begin(a); it != nl.mid(a); ++it) {
       const std::int32_t b = it->b;
       const double grad_factor = kernel.grad_factor(it->r);
-      double scaled_factor = grad_factor * (0.5 * (scale[a] + scale[b]));
-      Vec grad_w = scaled_factor * it->x_ab;
-      if (matrix) {  // (C_a + C_b) / 2 grad W; scaled_factor: its moment along x_ab, for tr(L)
-        grad_w = grad_factor * (0.5 * (correction[a] + correction[b]) * it->x_ab);
-        scaled_factor = grad_w.dot(it->x_ab) / (it->r * it->r);
-      }
+      const auto pair =
+          ParticleGradient::water_pair<D>(scale, correction, a, b, grad_factor, it->x_ab, it->r);
+      const Vec& grad_w = pair.grad_w;
+      const double scaled_factor = pair.factor;
       const Vec v_ab = v_a - vel[b];
       divergence += continuity_term<D>(volume[b], v_ab, grad_w);
       const Vec pressure_term =
@@ -133,12 +130,10 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
     for (auto it = nl.mid(a); it != nl.end(a); ++it) {
       const std::int32_t b = it->b;
       const double grad_factor = kernel.grad_factor(it->r);
-      double scaled_factor = grad_factor * scale[a];
-      Vec grad_w = scaled_factor * it->x_ab;
-      if (matrix) {  // C_a grad W (above)
-        grad_w = grad_factor * (correction[a] * it->x_ab);
-        scaled_factor = grad_w.dot(it->x_ab) / (it->r * it->r);
-      }
+      const auto pair =
+          ParticleGradient::wall_pair<D>(scale, correction, a, grad_factor, it->x_ab, it->r);
+      const Vec& grad_w = pair.grad_w;
+      const double scaled_factor = pair.factor;
       divergence += continuity_term<D>(volume[b], Vec(v_a - vel[b]), grad_w);
       const Vec pressure_term =
           pressure_acceleration<D>(m[b], pressure_sign * p_a, p[b], inv_rho_a, inv_rho[b], grad_w);
