@@ -18,6 +18,12 @@
 // artificial viscosity's own. Where the drag is stronger than r_av the term is off, so it adds no
 // Brinkman-like viscosity (nu ~ 1000 times water's) to the Darcy flow: under the seepage weir of
 // docs/verification.md it took 2.0 % off the discharge at dp 10 mm (-9.61 % against -7.58 %).
+// But r_av grows as h falls, so the share left on grows with the resolution: under the weir
+// (lambda = 196 1/s, alpha 0.05, c0 20 m/s) r_av = 103 / 205 / 411 1/s at dp 10 / 5 / 2.5 mm
+// leaves 0 / 5 / 52 % of the term on, and the discharge fell by 2.8 points from dp 5 to 2.5 mm.
+// With "drag_replaced" the term keeps 1 - s_a of the drag weight of drag_weight.h instead, which
+// is 1 inside soil at every h: the noise there is damped by the drag alone (lambda_a), which in
+// sand is well above r_av; in weakly dragged coarse rockfill "drag_limited" is the safer choice.
 #pragma once
 
 #include <algorithm>

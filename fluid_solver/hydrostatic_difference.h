@@ -43,6 +43,7 @@
 
 #include <algorithm>
 
+#include "fluid_solver/drag_weight.h"
 #include "fluid_solver/particle_gradient.h"
 #include "sph/vector.h"
 
@@ -80,14 +81,10 @@ struct SoilPressureSums {
     Vec walls;     ///< its wall neighbours' share
     Vec residual;  ///< total - walls - the symmetric water pairs: not antisymmetric
   };
-  /// The share of the full weight at which the drag weight s_a reaches 1 (above).
-  static constexpr double kFullWeightFrom = 0.5;
-
-  /// s_a (above) of the particle's drag rate lambda_a >= 0 and the largest drag rate over it and
-  /// its water neighbours, lambda_max >= lambda_a [1/s]: 0 without drag.
+  /// s_a (above; drag_weight.h) of the particle's drag rate lambda_a >= 0 and the largest drag
+  /// rate over it and its water neighbours, lambda_max >= lambda_a [1/s]: 0 without drag.
   static double drag_weight(double drag_rate, double neighbour_max) {
-    if (!(drag_rate > 0.0) || !(neighbour_max > 0.0)) return 0.0;
-    return std::min(1.0, drag_rate / (kFullWeightFrom * neighbour_max));
+    return DragWeight::of(drag_rate, neighbour_max);
   }
 
   /// The blend with weight w = s_a c_a: drag weight s_a (drag_weight()), 1 / rho_a, rho0 g.

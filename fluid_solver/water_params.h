@@ -42,9 +42,12 @@ struct WaterParams : sph::ParticleSpacing {  // dp, h, volume
   /// water.pressure_gradient_in_soil = "hydrostatic_difference" (hydrostatic_difference.h).
   bool hydrostatic_difference_in_soil = false;
   /// r_av of the drag share s_a = min(1, lambda_a / r_av) (artificial_viscosity.h), which the
-  /// drag-limited artificial viscosity and the hydrostatic difference form use; 0 with alpha = 0
-  /// (then s_a = 1 wherever lambda_a > 0).
+  /// drag-limited artificial viscosity uses; 0 with alpha = 0 (then s_a = 1 wherever
+  /// lambda_a > 0).
   double drag_share_rate = 0.0;
+  /// water.artificial_viscosity_in_soil = "drag_replaced": the artificial viscosity keeps 1 - s_a
+  /// of the drag weight of drag_weight.h (0 inside soil), which the rates recompute each step.
+  bool artificial_replaced_by_drag = false;
 
   bool laminar_on() const { return mu > 0.0; }
   /// The law the rates loop compiles in: "" when the laminar term is off.
@@ -54,7 +57,12 @@ struct WaterParams : sph::ParticleSpacing {  // dp, h, volume
   bool shifting_on() const { return particle_shifting > 0.0; }
   /// Whether a term uses the drag share (set_drag_rate fills it only then).
   bool drag_share_on() const {
-    return artificial.damping_rate > 0.0 || hydrostatic_difference_in_soil;
+    return artificial.damping_rate > 0.0 || artificial_replaced_by_drag ||
+           hydrostatic_difference_in_soil;
+  }
+  /// Whether the artificial viscosity yields to the drag inside soil (either way).
+  bool artificial_yields_to_drag() const {
+    return artificial.damping_rate > 0.0 || artificial_replaced_by_drag;
   }
   /// s_a of a drag rate lambda_a >= 0 [1/s].
   double drag_share(double drag_rate) const {
@@ -78,8 +86,9 @@ struct WaterParams : sph::ParticleSpacing {  // dp, h, volume
           ArtificialViscosity::kernel_damping_rate(w.alpha, w.sound_speed, p.h, D);
     } else {
       scene::checked_choice("water.artificial_viscosity_in_soil", w.artificial_viscosity_in_soil,
-                            {"drag_limited", "full"});
+                            {"drag_limited", "drag_replaced", "full"});
     }
+    p.artificial_replaced_by_drag = on("artificial_viscosity_drag_replaced");
     p.gravity = sph::to_vec<D>(s.run.gravity, "run.gravity");
     p.no_slip = scene::checked_choice("water.wall_condition", w.wall_condition,
                                       {"no_slip", "free_slip"}) == "no_slip";

@@ -9,6 +9,7 @@
 #include "fluid_solver/continuity.h"
 #include "fluid_solver/density_diffusion.h"
 #include "fluid_solver/density_diffusion_gradient.h"
+#include "fluid_solver/drag_weight.h"
 #include "fluid_solver/hydrostatic_difference.h"
 #include "fluid_solver/laminar_viscosity.h"
 #include "fluid_solver/particle_gradient.h"
@@ -50,9 +51,9 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
   const Vec g = prm.gravity;
   const Vec rho0_g = prm.eos.rho0() * g;  // hydrostatic_difference.h
   const bool hydrostatic_difference = prm.hydrostatic_difference_in_soil;
-  // The artificial viscosity yields to the drag share only when drag-limited
+  // The artificial viscosity yields to the drag only when drag-limited or drag-replaced
   // (artificial_viscosity.h).
-  const double av_cut_weight = prm.artificial.damping_rate > 0.0 ? 1.0 : 0.0;
+  const double av_cut_weight = prm.artificial_yields_to_drag() ? 1.0 : 0.0;
   const DensityDiffusion<D> diffusion(prm.density_diffusion, prm.h, prm.eos, g);
   if constexpr (kDiffusion) {
     fill_diffusion_states(diffusion, P, level);  // rho^{n-1} on a Verlet step (viscous_level.h)
@@ -245,6 +246,8 @@ RateSummary compute_water_rates(const sph::NeighbourList<D>& neighbours, const K
   }
   if (params.particle_gradient_matrix)
     ParticleGradient::compute_matrix(neighbours, kernel, P.n_free, P.volume, P.gradient_matrix);
+  if (params.artificial_replaced_by_drag)  // the share the drag replaces (artificial_viscosity.h)
+    DragWeight::compute(neighbours, P.n_free, P.drag_rate, P.viscosity_cut);
   return visit_laminar_viscosity<RateSummary>(params.laminar_law(), [&](auto law) {
     return dispatch_artificial<D, Kernel, decltype(law)>(neighbours, kernel, params, P, level);
   });

@@ -120,7 +120,8 @@ struct WaterPhase {
   double density_diffusion = 0.1;  ///< delta of the density diffusion term (delta-SPH); 0: off
   std::string density_diffusion_correction = "linear";  ///< "linear" | "hydrostatic"
   /// "drag_limited" (the seepage drag replaces the artificial viscosity where it damps faster;
-  /// fluid_solver/artificial_viscosity.h) | "full"
+  /// fluid_solver/artificial_viscosity.h) | "drag_replaced" (wherever it holds the water;
+  /// fluid_solver/drag_weight.h) | "full"
   std::string artificial_viscosity_in_soil = "drag_limited";
   std::string pressure_gradient_in_soil = "symmetric";
   double particle_shifting = 0.0;   ///< A of the Fickian particle shifting (Lind 2012); 0: off

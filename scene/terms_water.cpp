@@ -107,14 +107,27 @@ void add_water_terms(std::vector<TermSpec>& t) {
       },
       {Key("water.artificial_viscosity_in_soil", T::String)
            .fallback("\"drag_limited\"")
-           .one_of({"drag_limited", "full"})
+           .one_of({"drag_limited", "drag_replaced", "full"})
            .doc("The artificial viscosity inside soil. \"drag_limited\": the share "
                 "min(1, lambda / r_av) of it is removed at a water particle whose seepage drag "
                 "rate lambda (from the coupler) approaches the rate r_av = alpha c pi^2 / "
                 "(2 (D + 2) h) at which it damps kernel-scale noise, so the noise is damped at "
                 "least as fast as without soil and a Darcy flow feels no artificial viscosity "
-                "(fluid_solver/artificial_viscosity.h); \"full\": everywhere as in free water "
-                "(the discharge under the seepage weir 2 % lower at dp 10 mm).")}));
+                "(fluid_solver/artificial_viscosity.h); since r_av grows as h falls, more of it "
+                "stays on at finer dp. \"drag_replaced\": the drag replaces it wherever it "
+                "holds the water, with the weight min(1, lambda / (0.5 lambda_max)) over the "
+                "neighbours (fluid_solver/drag_weight.h): off inside soil at every dp, for "
+                "Darcy flows in sand, where lambda is well above r_av; \"full\": everywhere as "
+                "in free water (the discharge under the seepage weir 2 % lower at dp 10 mm).")}));
+  t.push_back(term(
+      "artificial_viscosity_drag_replaced",
+      "The artificial viscosity yields to the seepage drag inside soil by the drag weight "
+      "min(1, lambda / (0.5 lambda_max)): off inside soil; fluid_solver/drag_weight.h.",
+      "water.alpha > 0 and water.artificial_viscosity_in_soil = \"drag_replaced\"",
+      [](const Scene& s) {
+        return water(s).alpha > 0.0 && water(s).artificial_viscosity_in_soil == "drag_replaced";
+      },
+      {}));
   t.push_back(term(
       "artificial_viscosity_at_walls",
       "The artificial viscosity also between water and no-slip wall particles, "

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "io/run_files.h"
 #include "io/snapshot_reader.h"
@@ -48,11 +49,13 @@ GridSeries unit_reference(const Box& layer, double weir_x0, double weir_x1, doub
   });
 }
 
-/// The FV discharge under the weir's centre (K = 1) with fixed heads on the top cells given per
-/// cell (NaN: no flow, under the weir or without water above it); cells of `cell` m.
-double discharge_with_top_heads(const Box& layer, double weir_mid, double cell,
-                                const std::vector<SolidBlock>& cutoffs,
-                                const std::vector<double>& top_heads) {
+/// The FV discharge under the weir's centre and the mean upward gradient over [exit_x0, exit_x1]
+/// on the top (K = 1) with fixed heads on the top cells given per cell (NaN: no flow, under the
+/// weir or without water above it); cells of `cell` m.
+std::pair<double, double> layer_with_top_heads(const Box& layer, double weir_mid, double exit_x0,
+                                               double exit_x1, double cell,
+                                               const std::vector<SolidBlock>& cutoffs,
+                                               const std::vector<double>& top_heads) {
   LaplaceProblem problem;
   problem.solids = cutoffs;
   problem.x0 = layer.x0, problem.x1 = layer.x1, problem.y0 = layer.y0, problem.y1 = layer.y1;
@@ -64,7 +67,9 @@ double discharge_with_top_heads(const Box& layer, double weir_mid, double cell,
     problem.fixed_heads.push_back(
         {Side::kTop, centre - 0.25 * cell, centre + 0.25 * cell, top_heads[i]});
   }
-  return solve_laplace(problem).discharge_across_vertical(weir_mid, layer.y0, layer.y1);
+  const LaplaceSolution solution = solve_laplace(problem);
+  return {solution.discharge_across_vertical(weir_mid, layer.y0, layer.y1),
+          solution.mean_outward_gradient(Side::kTop, exit_x0, exit_x1)};
 }
 
 }  // namespace
@@ -191,8 +196,10 @@ SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
     if (top_count[k] > 0 && (centre < weir.x0 || centre > weir.x1))
       top_heads[k] = top_sum[k] / top_count[k];
   }
-  out.discharge_own_heads =
-      out.conductivity * discharge_with_top_heads(layer, mid, cell, cutoffs, top_heads);
+  const auto [own_discharge, own_exit_gradient] = layer_with_top_heads(
+      layer, mid, weir.x1, weir.x1 + out.exit_stretch, cell, cutoffs, top_heads);
+  out.discharge_own_heads = out.conductivity * own_discharge;
+  out.exit_gradient_own_heads = own_exit_gradient;
 
   const GridSeries reference =
       unit_reference(layer, weir.x0, weir.x1, out.exit_stretch, cutoffs, probe_points);

@@ -52,6 +52,10 @@ struct SeepageWeirCheck {
   /// over the window) instead of the pools' means. Agreement here and not with
   /// discharge_reference puts the error in the pools, not in the sand.
   double discharge_own_heads = 0;
+  /// The exit gradient of the same FV solution: linear in the top heads, so the window mean of
+  /// the instantaneous references; a pool's seiche, which moves the heads at the exit, moves it
+  /// as it moves the run's exit gradient.
+  double exit_gradient_own_heads = 0;
   /// The upstream pool's head within 0.1 m of the weir, from its mean, over dh.
   double upstream_head_near_weir = 0;
   /// The same for the downstream pool: where most of the water leaves the sand, so a pool that
@@ -61,6 +65,7 @@ struct SeepageWeirCheck {
   double discharge_error() const { return discharge / discharge_reference - 1.0; }
   double layer_error() const { return discharge / discharge_own_heads - 1.0; }
   double exit_gradient_error() const { return exit_gradient / exit_gradient_reference - 1.0; }
+  double layer_exit_gradient_error() const { return exit_gradient / exit_gradient_own_heads - 1.0; }
   double max_pressure_error() const;  ///< max |relative_error()| over the probes
   double max_head_error() const;      ///< max |head - head_reference| / (h1 - h2)
 };
