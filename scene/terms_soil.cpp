@@ -239,6 +239,13 @@ void add_interaction_terms(std::vector<TermSpec>& t) {
            .fallback("false")
            .doc("A rigid porous bed: its particles never move (water still seeps "
                 "through).")}));
+  t.push_back(term("interaction", "wall_renormalised_drag",
+                   "The drag and porosity sums of a water particle in soil beside a wall, "
+                   "divided by the share of its support outside the walls; "
+                   "coupler/interaction/wall_kernel_share.h.",
+                   "seepage and coupling.drag_at_walls = \"renormalised\"", [](const Scene& s) {
+                     return any_material(s, seeps) && s.coupling.drag_at_walls == "renormalised";
+                   }));
   t.push_back(term("interaction", "implicit_drag",
                    "The drag's rate goes to the solvers, which integrate it implicitly "
                    "(docs/coupling.md).",

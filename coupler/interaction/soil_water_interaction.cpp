@@ -7,6 +7,7 @@
 
 #include "coupler/interaction/soil_water_sums.h"
 #include "scene/term_registry.h"
+#include "sph/geometry.h"
 #include "sph/kernel_choice.h"
 
 namespace porosph::coupler {
@@ -30,6 +31,12 @@ InteractionParameters parameters_from_scene(const scene::Scene& s) {
   p.unit_weight_water = water.rho0 * gravity;
   p.submerged_saturation = s.coupling.submerged_saturation;
   p.implicit_drag = s.coupling.implicit_drag;
+  if (s.coupling.drag_at_walls != "truncated" && s.coupling.drag_at_walls != "renormalised") {
+    throw std::invalid_argument(
+        "coupling.drag_at_walls: expected \"truncated\" or "
+        "\"renormalised\", got \"" +
+        s.coupling.drag_at_walls + "\"");
+  }
   for (const scene::SoilMaterial& m : s.soil->materials) {
     SoilMaterialTerms terms;
     terms.law = porous::SeepageLaw::from_material(m, gravity, nu);
@@ -47,6 +54,23 @@ template <int D>
 std::unique_ptr<InteractionEngine> make_engine(const scene::Scene& s, int threads) {
   InteractionParameters p = parameters_from_scene(s);
   p.threads = threads;
+  if (s.coupling.drag_at_walls == "renormalised") {  // wall_kernel_share.h
+    p.soil_wall_volume = std::pow(s.run.dp, D);
+    for (const scene::Shape& wall : s.walls_acting_on("water")) {
+      if (!wall.moves_with.empty()) continue;  // its particles move
+      const bool cuts_soil =
+          wall.phases.empty() ||
+          std::find(wall.phases.begin(), wall.phases.end(), "soil") != wall.phases.end();
+      for (const sph::Vec<D>& x : sph::fill_shape<D>(wall, s.run.dp)) {
+        // A wall the soil passes through holds soil where it overlaps a soil block.
+        bool soil_there = false;
+        for (std::size_t b = 0; b < s.soil->blocks.size() && !cuts_soil && !soil_there; ++b)
+          soil_there = sph::inside_shape<D>(s.soil->blocks[b], x, s.run.dp);
+        if (!soil_there)
+          p.soil_wall_points.insert(p.soil_wall_points.end(), x.data(), x.data() + D);
+      }
+    }
+  }
   const sph::DomainBox<D> box = sph::DomainBox<D>::from_scene(s, 2.0 * s.h());
   const sph::KernelChoice<D> choice(s.run.kernel, s.h(), s.run.dp,
                                     s.run.kernel_gradient != "plain");

@@ -17,6 +17,7 @@
 
 #include "coupler/interaction/cross_neighbours.h"
 #include "coupler/interaction/soil_water_interaction.h"
+#include "coupler/interaction/wall_kernel_share.h"
 #include "porous/seepage_law.h"
 #include "porous/submerged_density.h"
 #include "proto/coupling_client.h"
@@ -41,6 +42,10 @@ struct InteractionParameters {
   int threads = 0;                    ///< OpenMP threads of the sums; 0: OpenMP's default
   bool implicit_drag = true;          ///< also the drag rates (InteractionOutputs)
   std::vector<SoilMaterialTerms> materials;
+  /// coupling.drag_at_walls = "renormalised": the fixed wall particles of the walls acting on
+  /// soil (n x D, flattened) and their volume dp^D (wall_kernel_share.h); empty: off.
+  std::vector<double> soil_wall_points;
+  double soil_wall_volume = 0.0;
 };
 
 class InteractionEngine {
@@ -69,7 +74,11 @@ class SoilWaterSums final : public InteractionEngine {
   static constexpr int kStride = D + 2;
 
   SoilWaterSums(InteractionParameters parameters, const sph::DomainBox<D>& box)
-      : p_(std::move(parameters)), kernel_(p_.h), box_(box) {
+      : p_(std::move(parameters)),
+        kernel_(p_.h),
+        box_(box),
+        walls_(std::move(p_.soil_wall_points), p_.soil_wall_volume, kernel_, box,
+               sph::kSolverSkinFraction * kernel_.support()) {
     grid_.set_skin(sph::kSolverSkinFraction * kernel_.support());
   }
 
@@ -81,6 +90,7 @@ class SoilWaterSums final : public InteractionEngine {
                       water.overlap_id.size()},
         kernel_.support(), box_);
     gather_soil(soil, forces);
+    walls_.compute(water, wall_scale_);  // 1 everywhere without renormalisation
     InteractionSummary summary;
     summary.evaluated = true;
     summary.forces = forces;
@@ -185,7 +195,10 @@ class SoilWaterSums final : public InteractionEngine {
         std::size_t near = 0;
         for (std::size_t c = 0; c < count; ++c) near += r[c] < support;
         pairs += near;
-        if (rates) remember_pairs(a, t, count, soil_index, w.data());
+        // The wall's share of the support renormalises the drag and porosity sums (not the
+        // saturation): wall_kernel_share.h.
+        const double wall_scale = wall_scale_[a];
+        if (rates) remember_pairs(a, t, count, soil_index, w.data(), wall_scale);
         const Vec v_a = Eigen::Map<const Vec>(water.overlap_velocity.data() + a * D);
         const double rho_a = water.overlap_density[a];
         const double volume_a = water.overlap_mass[a] / rho_a;
@@ -205,13 +218,15 @@ class SoilWaterSums final : public InteractionEngine {
           const Vec f = porous::seepage_force<D>(soil_i.a, soil_i.b, v_r);
           const double rate = porous::seepage_rate_coefficient<D>(soil_i.a, soil_i.b, v_r);
           const double weight = volume_a * kernel_w[c];
+          const double w_drag = kernel_w[c] * wall_scale;
+          const double weight_drag = volume_a * w_drag;
           double* soil_sums = soil_rows + static_cast<std::size_t>(soil_index[c]) * kStride;
-          for (int k = 0; k < D; ++k) soil_sums[k] += weight * f[k];
+          for (int k = 0; k < D; ++k) soil_sums[k] += weight_drag * f[k];
           soil_sums[D] += weight;
-          soil_sums[D + 1] += weight * rate;
-          sum += (soil_i.volume * kernel_w[c]) * f;
-          rate_sum += soil_i.volume * kernel_w[c] * rate;
-          solid_sum += soil_i.solid_volume * kernel_w[c];
+          soil_sums[D + 1] += weight_drag * rate;
+          sum += (soil_i.volume * w_drag) * f;
+          rate_sum += soil_i.volume * w_drag * rate;
+          solid_sum += soil_i.solid_volume * w_drag;
         }
         out.water_porosity[a] = std::clamp(1.0 - solid_sum, 0.0, 1.0);
         if (!forces) continue;
@@ -289,16 +304,16 @@ class SoilWaterSums final : public InteractionEngine {
                      InteractionOutputs& out) override;  // soil_water_implicit.h
 
  private:
-  /// Keeps water particle a's pairs within the support (soil index, W) in thread t's lists, for
-  /// implicit_drag() after dt is known.
+  /// Keeps water particle a's pairs within the support (soil index, W times the wall scale) in
+  /// thread t's lists, for implicit_drag() after dt is known.
   void remember_pairs(std::int64_t a, int t, std::size_t count, const std::int32_t* soil_index,
-                      const double* w) {
+                      const double* w, double scale) {
     near_thread_[a] = t;
     near_begin_[a] = near_soil_[t].size();
     for (std::size_t c = 0; c < count; ++c) {
       if (!(w[c] > 0.0)) continue;
       near_soil_[t].push_back(soil_index[c]);
-      near_w_[t].push_back(w[c]);
+      near_w_[t].push_back(w[c] * scale);
     }
     near_count_[a] = near_soil_[t].size() - near_begin_[a];
   }
@@ -343,6 +358,8 @@ class SoilWaterSums final : public InteractionEngine {
   Kernel kernel_;
   sph::DomainBox<D> box_;
   CrossNeighbours<D> grid_;
+  WallKernelShare<D, Kernel> walls_;  ///< coupling.drag_at_walls (no points: scale 1)
+  std::vector<double> wall_scale_;    ///< per water overlap particle: 1 / (1 - S_wall)
   std::vector<SoilPairData> soil_;
   std::vector<double> effective_mass_;                 ///< m_i^s per soil overlap particle
   std::vector<Vec> water_predicted_, soil_predicted_;  ///< implicit_drag(): v* per particle

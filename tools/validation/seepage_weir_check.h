@@ -54,7 +54,8 @@ struct SeepageWeirCheck {
   double discharge_own_heads = 0;
   /// The exit gradient of the same FV solution: linear in the top heads, so the window mean of
   /// the instantaneous references; a pool's seiche, which moves the heads at the exit, moves it
-  /// as it moves the run's exit gradient.
+  /// as it moves the run's exit gradient. Scaled by the extrapolated reference over the same
+  /// grid's exit gradient with the pools' means (that grid's own error, -0.3 %).
   double exit_gradient_own_heads = 0;
   /// The upstream pool's head within 0.1 m of the weir, from its mean, over dh.
   double upstream_head_near_weir = 0;

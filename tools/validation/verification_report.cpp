@@ -142,7 +142,8 @@ int report_seepage_weir(const SeepageWeirCheck& c) {
       100 * c.downstream_head_near_weir);
   std::printf(
       "the layer alone, exit gradient: FV with the run's own heads %.4f, SPH %+.2f%% from"
-      " it (FV at 2.5 mm cells, not extrapolated)\n",
+      " it (FV at 2.5 mm cells, scaled by the reference over the same grid with the pools' "
+      "means)\n",
       c.exit_gradient_own_heads, 100 * c.layer_exit_gradient_error());
   std::printf("%8s %8s %12s %12s %9s %10s %10s %9s\n", "x", "y", "p", "p_ref", "p err", "head",
               "head_ref", "err/dh");
