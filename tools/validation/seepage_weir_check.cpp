@@ -74,6 +74,20 @@ std::pair<double, double> layer_with_top_heads(const Box& layer, double weir_mid
 
 }  // namespace
 
+double batch_standard_error(const std::vector<double>& history, int batches) {
+  const std::size_t per_batch = history.size() / static_cast<std::size_t>(batches);
+  if (batches < 2 || per_batch < 2) return 0.0;
+  std::vector<double> means(batches, 0.0);
+  for (int b = 0; b < batches; ++b) {
+    for (std::size_t k = 0; k < per_batch; ++k) means[b] += history[b * per_batch + k];
+    means[b] /= static_cast<double>(per_batch);
+  }
+  double mean = 0.0, square = 0.0;
+  for (double m : means) mean += m / batches;
+  for (double m : means) square += (m - mean) * (m - mean);
+  return std::sqrt(square / (batches - 1) / batches);
+}
+
 double SeepageWeirCheck::max_pressure_error() const {
   double worst = 0;
   for (const auto& p : probes) worst = std::max(worst, std::abs(p.relative_error()));
@@ -179,6 +193,7 @@ SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
     h2 += sum_h2 / n2;
     out.discharge_history.push_back(flux / (under.x1 - under.x0));
     exit_gradient += exit_v / n_exit / out.conductivity;
+    out.exit_gradient_history.push_back(exit_v / n_exit / out.conductivity);
     for (std::size_t k = 0; k < probe_points.size(); ++k) {
       if (pn[k] == 0) throw std::runtime_error(run_dir + ": a probe without water");
       probe_h[k] += ph[k] / pn[k];

@@ -46,7 +46,8 @@ struct SeepageWeirCheck {
   double exit_gradient = 0, exit_gradient_reference = 0;
   double exit_stretch = 0;  ///< [m]
   std::vector<SeepageProbe> probes;
-  std::vector<double> discharge_history;  ///< q of each averaged output (steadiness)
+  std::vector<double> discharge_history;      ///< q of each averaged output (steadiness)
+  std::vector<double> exit_gradient_history;  ///< the exit gradient of each averaged output
   /// The layer alone: the FV discharge (2.5 mm cells) with the run's own heads as the top
   /// boundary (per cell, the water 0 .. 2 dp above the layer within dp of its centre, averaged
   /// over the window) instead of the pools' means. Agreement here and not with
@@ -70,6 +71,12 @@ struct SeepageWeirCheck {
   double max_pressure_error() const;  ///< max |relative_error()| over the probes
   double max_head_error() const;      ///< max |head - head_reference| / (h1 - h2)
 };
+
+/// The standard error of the mean of `history` by batch means: the outputs in `batches`
+/// consecutive blocks, the spread of the blocks' means over sqrt(batches - 1) (the outputs of a
+/// seiche or a slow drift are correlated, so their own spread would understate it); 0 with fewer
+/// than 2 outputs per block.
+double batch_standard_error(const std::vector<double>& history, int batches = 4);
 
 /// `window` <= 0: the last quarter of the run.
 SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window = 0.0);

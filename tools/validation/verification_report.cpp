@@ -134,6 +134,13 @@ int report_seepage_weir(const SeepageWeirCheck& c) {
   for (double q : c.discharge_history) q_min = std::min(q_min, q), q_max = std::max(q_max, q);
   std::printf("discharge over the window: %.5e .. %.5e m^2/s (steadiness %.2f%%)\n", q_min, q_max,
               100 * (q_max - q_min) / c.discharge);
+  // The window means' own uncertainty (batch means of 4 blocks): a verdict closer to its target
+  // than this is not decided by the window.
+  std::printf(
+      "standard error of the window means (4 batches): discharge %.2f%%, exit gradient "
+      "%.2f%% of the reference\n",
+      100 * batch_standard_error(c.discharge_history) / c.discharge_reference,
+      100 * batch_standard_error(c.exit_gradient_history) / c.exit_gradient_reference);
   std::printf(
       "the layer alone: FV with the run's own heads 0 .. 2 dp above the layer %.5e m^2/s, SPH"
       " %+.2f%% from it; within 0.1 m of the weir the upstream pool %+.2f%% and the downstream"
