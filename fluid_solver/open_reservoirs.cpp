@@ -57,6 +57,11 @@ OpenReservoirs<D>::OpenReservoirs(const scene::WaterPhase& water,
                                   std::to_string(2.0 * h_) + " m");
     z.level = up_sign_ * r.level;
     z.bottom = std::min(up_sign_ * z.min[up_axis_], up_sign_ * z.max[up_axis_]);
+    z.pressure_level = z.level;
+    if (r.absorbing) {
+      const double depth = z.level - z.bottom;
+      z.impedance = depth / std::sqrt(g_ * depth);  // H / c, c = sqrt(g H)
+    }
     if (!(r.level > z.min[up_axis_] && r.level < z.max[up_axis_]))
       throw std::invalid_argument(what + ".level: must lie inside the box along the gravity axis");
     z.first_cell = cells;
@@ -186,6 +191,15 @@ void OpenReservoirs<D>::begin_step(const WaterParticles<D>& P, double time) {
   }
   for (std::size_t c = 0; c < cell_speed_.size(); ++c)
     cell_speed_[c] = cell_n_[c] > 0 ? cell_sum_[c] / cell_n_[c] : 0.0;
+  for (Zone& z : zones_) {  // Flather: s_L - (H / c) u_m (absorbing), else s_L
+    if (!(z.impedance > 0.0)) continue;
+    std::size_t total = 1, sampled = 0;
+    for (int k = 0; k < D; ++k) total *= static_cast<std::size_t>(z.cells[k]);
+    double sum = 0.0;
+    for (std::size_t c = z.first_cell; c < z.first_cell + total; ++c)
+      if (cell_n_[c] > 0) sum += cell_speed_[c], ++sampled;
+    z.pressure_level = z.level - z.impedance * (sampled > 0 ? sum / sampled : 0.0);
+  }
 }
 
 template <int D>
@@ -210,7 +224,8 @@ void OpenReservoirs<D>::capture_and_impose(WaterParticles<D>& P) const {
       continue;
     }
     const Zone& z = zones_[P.zone[a] - first_zone_];
-    const double p = eos_.still_water_pressure(std::max(0.0, z.level - height(P.position[a])), g_);
+    const double p =
+        eos_.still_water_pressure(std::max(0.0, z.pressure_level - height(P.position[a])), g_);
     P.density[a] = P.density_previous[a] = eos_.density(p);
     P.density_rate[a] = 0.0;
   }
@@ -254,7 +269,7 @@ std::size_t OpenReservoirs<D>::renew(WaterParticles<D>& P, double volume, std::i
         continue;
       Vec x = x0;
       x[z.axis] = z.face + z.normal[z.axis] * d;
-      const double p = eos_.still_water_pressure(std::max(0.0, z.level - height(x)), g_);
+      const double p = eos_.still_water_pressure(std::max(0.0, z.pressure_level - height(x)), g_);
       const double rho = eos_.density(p);
       const Vec u = velocity_at(zone, x);
       const std::size_t b = born_.size();

@@ -29,6 +29,16 @@
 //    replacing each particle that crosses (Tafuni et al.), keeps a particle that crosses the face
 //    back and forth from multiplying: a copy per crossing filled the buffer of a pool whose
 //    surface particles oscillated about the face;
+//  - absorbing = true (a radiation condition of Flather 1976 type: R. A. Flather, "A tidal model of
+//    the north-west European continental shelf", Mem. Soc. R. Sci. Liege 6(10), 141-164): the
+//    pressure above uses the level s_L - (H / c) u_m instead of s_L, H = s_L - s_B the level's
+//    depth, c = sqrt(g H) the long-wave speed and u_m the mean of u over the zone's sampled cells
+//    (the depth-mean inward velocity). A long wave leaving through the face carries
+//    eta = -(H / c) u . n, so the face then matches it and it does not reflect; with a fixed level
+//    (eta = 0 there) it reflects whole, and a pool between a wall and the reservoir rings as a
+//    quarter-wave seiche (the seepage weir's, period ~1.5 s, docs/verification.md). A steady
+//    inflow u holds the pool (H / c) u below s_L, as the velocity head across a channel of that
+//    impedance would; the geometry (rows, capture, removal above the level) keeps s_L;
 //  - a free particle inside the box below the level becomes a buffer particle (no exchange of
 //    momentum); one above the level is removed, and so is a buffer particle past the box's far
 //    face (booked as outflow).
@@ -83,10 +93,13 @@ class OpenReservoirs {
   int zone_below_level(const Vec& x) const;
   /// True if x lies inside a box, above its level (a free particle there is removed).
   bool above_level(const Vec& x) const;
+  /// The level whose still-water pressure zone `zone`'s buffer carries over the prepared step.
+  double pressure_level(int zone) const { return zones_[zone - first_zone_].pressure_level; }
   /// True if x lies beyond the far face of zone `zone`'s box (a buffer particle there is removed).
   bool past_far_face(int zone, const Vec& x) const;
 
-  /// The cell velocities for the step from `time` (free water next to each face; no allocation).
+  /// The cell velocities for the step from `time` (free water next to each face; no allocation),
+  /// and the level of the imposed pressure (the level, or with absorbing its Flather shift).
   void begin_step(const WaterParticles<D>& P, double time);
   /// The velocity u n a buffer particle of zone `zone` at x has over the prepared step.
   Vec velocity_at(int zone, const Vec& x) const;
@@ -114,6 +127,8 @@ class OpenReservoirs {
     double length = 0.0;          ///< L = N dp along the normal
     double level = 0.0;           ///< s_L (height of the level)
     double bottom = 0.0;          ///< lowest height of the box
+    double impedance = 0.0;       ///< absorbing: H / sqrt(g H) [s]; 0: the level is fixed
+    double pressure_level = 0.0;  ///< the level of the imposed pressure over the prepared step
     std::array<long, D> cells{};  ///< per axis: rows along up, columns across, 1 along the normal
     std::size_t first_cell = 0;
   };

@@ -98,6 +98,9 @@ struct ReservoirZone {
   /// (a buffer beyond the domain's open side, fluid_solver/open_reservoirs.h)
   std::string boundary = "surface";
   std::vector<double> direction;  ///< "open": unit inward normal of the open side
+  /// "open" only: the imposed level falls by (H / sqrt(g H)) times the depth-mean inward velocity
+  /// at the face, so that long waves leave the pool (fluid_solver/open_reservoirs.h)
+  bool absorbing = false;
 };
 
 /// Soil-water interaction settings ([coupling]).

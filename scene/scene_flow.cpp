@@ -103,6 +103,18 @@ void add_flow_zones(SceneSchema& s) {
                "(booked as outflow). Nothing is added or removed at the pool's surface, so the "
                "pool is not stirred. Needs `direction`; the box must be at least 2h thick along "
                "it; start_time must be 0 (fluid_solver/open_reservoirs.h)."));
+  s.keys.push_back(
+      Key("water.reservoir[].absorbing", T::Bool)
+          .fallback("false")
+          .doc("For boundary = \"open\": a radiation condition of Flather (1976) type for long "
+               "waves. The buffer's pressure is that of the level less (H / sqrt(g H)) u, H the "
+               "level's depth above the box's bottom and u the depth-mean velocity into the "
+               "domain of the water within 2h of the face, so that a wave arriving at the face "
+               "leaves instead of reflecting (a pool between a wall and a fixed level rings as a "
+               "quarter-wave seiche that nothing damps). A steady flow u through the face then "
+               "holds the pool H u / sqrt(g H) below the level where water enters (above it where "
+               "it leaves), as a long channel to the reservoir would (fluid_solver/"
+               "open_reservoirs.h)."));
   s.keys.push_back(Key("water.reservoir[].direction", T::Vector)
                        .optional()
                        .doc("For boundary = \"open\": unit vector along one axis across gravity, "
@@ -207,6 +219,8 @@ void check_reservoirs(const toml::table& root, const ShapeChecker& shapes,
       errors.fail(zone.get(open ? "boundary" : "direction"), key + ".direction",
                   open ? "an open reservoir needs `direction` (into the domain, e.g. [1.0, 0.0])"
                        : "`direction` is for boundary = \"open\" only");
+    if (!open && zone["absorbing"].value_or(false))
+      errors.fail(zone.get("absorbing"), key + ".absorbing", "is for boundary = \"open\" only");
     if (open && zone["start_time"].value_or(0.0) != 0.0)
       errors.fail(zone.get("start_time"), key + ".start_time",
                   "an open reservoir holds its level from t = 0; leave start_time out");
@@ -244,6 +258,7 @@ void build_flow_zones(const toml::table& water, WaterPhase& w) {
       z.start_time = *t["start_time"].value<double>();
       z.boundary = *t["boundary"].value<std::string>();
       if (t.contains("direction")) z.direction = vector_of(t.get("direction"));
+      z.absorbing = *t["absorbing"].value<bool>();
       w.reservoirs.push_back(std::move(z));
     }
   }

@@ -63,7 +63,14 @@ TEST(SceneReservoirs, OpenBoundaryKeysAndTheirErrors) {
   EXPECT_EQ(s.water->reservoirs[0].boundary, "open");
   EXPECT_EQ(s.water->reservoirs[0].direction, (std::vector<double>{1.0, 0.0}));
   EXPECT_EQ(load_scene_text(with_reservoir(), "x.toml").water->reservoirs[0].boundary, "surface");
+  EXPECT_FALSE(s.water->reservoirs[0].absorbing);
+  EXPECT_TRUE(load_scene_text(with_reservoir("level = 0.4", open + "\nabsorbing = true"), "x.toml")
+                  .water->reservoirs[0]
+                  .absorbing);
   const std::vector<ErrorCase> cases = {
+      {"absorbing on a surface reservoir",
+       with_reservoir("level = 0.4", "level = 0.4\nabsorbing = true"),
+       "water.reservoir[0].absorbing", "absorbing = true", "is for boundary = \"open\" only"},
       {"open without direction", with_reservoir("level = 0.4", "level = 0.4\nboundary = \"open\""),
        "water.reservoir[0].direction", "boundary = \"open\"",
        "an open reservoir needs `direction` (into the domain, e.g. [1.0, 0.0])"},
