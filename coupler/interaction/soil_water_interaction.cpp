@@ -50,26 +50,33 @@ InteractionParameters parameters_from_scene(const scene::Scene& s) {
   return p;
 }
 
+/// The fixed wall particles (n x D, flattened) of the walls that hold neither water nor soil:
+/// those acting on water, less the particles of a wall the soil passes through that lie in a soil
+/// block (there is soil there); moving walls are left out (wall_kernel_share.h).
+template <int D>
+std::vector<double> wall_points_without_soil(const scene::Scene& s) {
+  std::vector<double> points;
+  for (const scene::Shape& wall : s.walls_acting_on("water")) {
+    if (!wall.moves_with.empty()) continue;
+    const bool cuts_soil = wall.phases.empty() || std::find(wall.phases.begin(), wall.phases.end(),
+                                                            "soil") != wall.phases.end();
+    for (const sph::Vec<D>& x : sph::fill_shape<D>(wall, s.run.dp)) {
+      bool soil_there = false;
+      for (std::size_t b = 0; b < s.soil->blocks.size() && !cuts_soil && !soil_there; ++b)
+        soil_there = sph::inside_shape<D>(s.soil->blocks[b], x, s.run.dp);
+      if (!soil_there) points.insert(points.end(), x.data(), x.data() + D);
+    }
+  }
+  return points;
+}
+
 template <int D>
 std::unique_ptr<InteractionEngine> make_engine(const scene::Scene& s, int threads) {
   InteractionParameters p = parameters_from_scene(s);
   p.threads = threads;
   if (s.coupling.drag_at_walls == "renormalised") {  // wall_kernel_share.h
+    p.soil_wall_points = wall_points_without_soil<D>(s);
     p.soil_wall_volume = std::pow(s.run.dp, D);
-    for (const scene::Shape& wall : s.walls_acting_on("water")) {
-      if (!wall.moves_with.empty()) continue;  // its particles move
-      const bool cuts_soil =
-          wall.phases.empty() ||
-          std::find(wall.phases.begin(), wall.phases.end(), "soil") != wall.phases.end();
-      for (const sph::Vec<D>& x : sph::fill_shape<D>(wall, s.run.dp)) {
-        // A wall the soil passes through holds soil where it overlaps a soil block.
-        bool soil_there = false;
-        for (std::size_t b = 0; b < s.soil->blocks.size() && !cuts_soil && !soil_there; ++b)
-          soil_there = sph::inside_shape<D>(s.soil->blocks[b], x, s.run.dp);
-        if (!soil_there)
-          p.soil_wall_points.insert(p.soil_wall_points.end(), x.data(), x.data() + D);
-      }
-    }
   }
   const sph::DomainBox<D> box = sph::DomainBox<D>::from_scene(s, 2.0 * s.h());
   const sph::KernelChoice<D> choice(s.run.kernel, s.h(), s.run.dp,

@@ -42,8 +42,9 @@ struct InteractionParameters {
   int threads = 0;                    ///< OpenMP threads of the sums; 0: OpenMP's default
   bool implicit_drag = true;          ///< also the drag rates (InteractionOutputs)
   std::vector<SoilMaterialTerms> materials;
-  /// coupling.drag_at_walls = "renormalised": the fixed wall particles of the walls acting on
-  /// soil (n x D, flattened) and their volume dp^D (wall_kernel_share.h); empty: off.
+  /// coupling.drag_at_walls = "renormalised": the fixed wall particles of the walls that hold
+  /// neither water nor soil (n x D, flattened) and their volume dp^D (wall_kernel_share.h); empty:
+  /// off.
   std::vector<double> soil_wall_points;
   double soil_wall_volume = 0.0;
 };
