@@ -31,10 +31,11 @@ struct DragWeight {
   }
 
   /// s_a of every free water particle a < n_free into out[a] (lambda_max over its water
-  /// neighbours, the list's first part); out must hold n_free entries.
+  /// neighbours, the list's first part); out is resized to n_free.
   template <int D>
   static void compute(const sph::NeighbourList<D>& neighbours, std::size_t n_free,
                       const std::vector<double>& drag_rate, std::vector<double>& out) {
+    out.resize(n_free);
     const std::int64_t n = static_cast<std::int64_t>(n_free);
 #pragma omp parallel for schedule(dynamic, 256)
     for (std::int64_t a = 0; a < n; ++a) {

@@ -52,6 +52,10 @@ struct WaterParticles {
   /// run.kernel_gradient = "particle_matrix", filled at the start of each rate evaluation; empty
   /// otherwise.
   std::vector<Eigen::Matrix<double, D, D>> gradient_matrix;
+  /// Per water particle: the drag weight s_a (drag_weight.h) of the hydrostatic difference form
+  /// and the drag-replaced artificial viscosity, filled at the start of each rate evaluation when
+  /// either is on; empty otherwise.
+  std::vector<double> drag_weight;
   /// Renormalised gradient of the density diffusion's departure potential (water particles only;
   /// density_diffusion_gradient.h), filled before the pair loop when the diffusion is on.
   std::vector<Vec> departure_gradient;

@@ -76,7 +76,6 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
     // Inside soil the pressure term is summed in both forms and blended after the loops.
     const bool in_soil = hydrostatic_difference && drag_rate[a] > 0.0;
     SoilPressureSums<D> soil_pressure;
-    double neighbour_drag_rate = drag_rate[a];  // the largest lambda over a and its neighbours
     double divergence = 0.0;
     double diffusion_sum = 0.0;  // D_a / (delta h c0), water neighbours only (density_diffusion.h)
     DiffusionState diffusion_a;
@@ -94,7 +93,6 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
       const Vec pressure_term =
           pressure_acceleration<D>(m[b], pressure_sign * p_a, p[b], inv_rho_a, inv_rho[b], grad_w);
       if (in_soil) {
-        neighbour_drag_rate = std::max(neighbour_drag_rate, drag_rate[b]);
         soil_pressure.add(false, pressure_term, m[b], p_a, p[b], inv_rho_a, inv_rho[b],
                           rho0_g.dot(it->x_ab), volume[b], scaled_factor, it->r, grad_w);
       } else {
@@ -162,8 +160,7 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
     }
     Vec form_residual = Vec::Zero();
     if (in_soil) {
-      const auto split = soil_pressure.split(
-          SoilPressureSums<D>::drag_weight(drag_rate[a], neighbour_drag_rate), inv_rho_a, rho0_g);
+      const auto split = soil_pressure.split(P.drag_weight[a], inv_rho_a, rho0_g);
       acc += split.total;
       acc_wall += split.walls;
       form_residual = split.residual;
@@ -246,8 +243,10 @@ RateSummary compute_water_rates(const sph::NeighbourList<D>& neighbours, const K
   }
   if (params.particle_gradient_matrix)
     ParticleGradient::compute_matrix(neighbours, kernel, P.n_free, P.volume, P.gradient_matrix);
+  if (params.hydrostatic_difference_in_soil || params.artificial_replaced_by_drag)
+    DragWeight::compute(neighbours, P.n_free, P.drag_rate, P.drag_weight);
   if (params.artificial_replaced_by_drag)  // the share the drag replaces (artificial_viscosity.h)
-    DragWeight::compute(neighbours, P.n_free, P.drag_rate, P.viscosity_cut);
+    std::copy(P.drag_weight.begin(), P.drag_weight.end(), P.viscosity_cut.begin());
   return visit_laminar_viscosity<RateSummary>(params.laminar_law(), [&](auto law) {
     return dispatch_artificial<D, Kernel, decltype(law)>(neighbours, kernel, params, P, level);
   });
