@@ -140,6 +140,9 @@ void RunSession::load_resume_point() {
   try {
     check_checkpoint_scene(out_dir_, *manifest, scene_hash(record_.resolved_toml));
     scene_ = scene::load_scene_text(record_.resolved_toml, manifest->coupler_file);
+    // The run keeps its own text: this binary may resolve it with keys added since the run began
+    // (their defaults), and the checkpoints it writes must name the run's hash, not a new one.
+    scene_.resolved_toml = record_.resolved_toml;
   } catch (const scene::SceneError& e) {
     throw BadInput(std::string("cannot resume: bad scene in the checkpoint: ") + e.what());
   } catch (const std::runtime_error& e) {
