@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -110,6 +111,47 @@ void check_checkpoint_scene(const std::string& out_dir, const CheckpointManifest
                              recorded + "; the checkpoint's: hash " + hash +
                              "): the directory holds files of two runs");
   }
+}
+
+namespace {
+
+/// Each setting line of a resolved scene text, prefixed by its table: "coupling.x = 1" for a line
+/// "x = 1" under [coupling], "[[water.reservoir]] x = 1" under an array of tables.
+std::vector<std::string> qualified_lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::string table, line;
+  std::istringstream in(text);
+  while (std::getline(in, line)) {
+    const std::size_t first = line.find_first_not_of(" \t");
+    if (first == std::string::npos || line[first] == '#') continue;
+    const std::string trimmed = line.substr(first);
+    if (trimmed.rfind("[[", 0) == 0) {
+      table = trimmed + " ";
+    } else if (trimmed[0] == '[') {
+      table = trimmed.substr(1, trimmed.find(']') - 1) + ".";
+    } else {
+      lines.push_back(table + trimmed);
+    }
+  }
+  return lines;
+}
+
+}  // namespace
+
+std::vector<std::string> keys_added_since(const std::string& run_text,
+                                          const std::string& resolved_now) {
+  std::multiset<std::string> before;
+  for (std::string& line : qualified_lines(run_text)) before.insert(std::move(line));
+  std::vector<std::string> added;
+  for (std::string& line : qualified_lines(resolved_now)) {
+    const auto found = before.find(line);
+    if (found != before.end()) {
+      before.erase(found);
+    } else {
+      added.push_back(std::move(line));
+    }
+  }
+  return added;
 }
 
 CheckpointKeeper::CheckpointKeeper(const scene::Scene& scene, const std::string& out_dir,

@@ -50,6 +50,14 @@ std::optional<CheckpointManifest> load_latest_checkpoint(const std::string& out_
 void check_checkpoint_scene(const std::string& out_dir, const CheckpointManifest& manifest,
                             const std::string& hash);
 
+/// Resume: the settings this binary adds when it resolves a run's scene text (`run_text`, the
+/// run's resolved scene) again (`resolved_now`): keys introduced since the run began, which take
+/// this binary's defaults from the resume on. Each as "table.key = value" (a table of an array of
+/// tables by its header, e.g. "[[water.reservoir]] absorbing = false"), in the order of
+/// `resolved_now`; empty when the run's text already holds every key.
+std::vector<std::string> keys_added_since(const std::string& run_text,
+                                          const std::string& resolved_now);
+
 /// The coupler side of checkpointing over one run: schedule (run.checkpoint_interval,
 /// run.checkpoint_wall_minutes, or forced on a signal), the pending checkpoint, and its files.
 class CheckpointKeeper {

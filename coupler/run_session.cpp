@@ -22,6 +22,7 @@
 #include "coupler/solver_hub.h"
 #include "coupler/solver_launch.h"
 #include "coupler/solver_process.h"
+#include "coupler/thin_walls.h"
 #include "proto/checkpoint_names.h"
 #include "scene/scene_loader.h"
 
@@ -110,6 +111,8 @@ void RunSession::load_fresh_run() {
   record_.ledger = ConservationLedger(scene_.run.dimension);
   const std::string refused = run_gate(scene_, options_.out_dir, options_.force_size);
   if (!refused.empty()) throw BadInput(refused);
+  for (const std::string& warning : thin_wall_warnings(scene_))
+    std::fprintf(stderr, "coupler: warning: %s\n", warning.c_str());
   prepare_output_dir();
 }
 
@@ -126,6 +129,7 @@ void RunSession::load_resume_point() {
   }
   LoopState loop;
   std::optional<CheckpointManifest> manifest;
+  std::vector<std::string> added_keys;
   try {
     manifest = load_latest_checkpoint(out_dir_, record_, loop);
   } catch (const std::exception& e) {
@@ -141,7 +145,8 @@ void RunSession::load_resume_point() {
     check_checkpoint_scene(out_dir_, *manifest, scene_hash(record_.resolved_toml));
     scene_ = scene::load_scene_text(record_.resolved_toml, manifest->coupler_file);
     // The run keeps its own text: this binary may resolve it with keys added since the run began
-    // (their defaults), and the checkpoints it writes must name the run's hash, not a new one.
+    // (their defaults, said below), and its checkpoints must name the run's hash, not a new one.
+    added_keys = keys_added_since(record_.resolved_toml, scene_.resolved_toml);
     scene_.resolved_toml = record_.resolved_toml;
   } catch (const scene::SceneError& e) {
     throw BadInput(std::string("cannot resume: bad scene in the checkpoint: ") + e.what());
@@ -166,6 +171,14 @@ void RunSession::load_resume_point() {
   std::fprintf(stderr, "coupler: resuming %s from checkpoint %u at t = %.9g s (step %llu)\n",
                out_dir_.c_str(), manifest->index, manifest->time,
                static_cast<unsigned long long>(manifest->step));
+  for (const std::string& setting : added_keys) {
+    const std::size_t eq = setting.find(" = ");
+    std::fprintf(stderr,
+                 "coupler: %s is newer than the run's scene; from here on it takes this "
+                 "binary's default, %s\n",
+                 setting.substr(0, eq).c_str(),
+                 eq == std::string::npos ? "" : setting.substr(eq + 3).c_str());
+  }
 }
 
 void RunSession::start_solvers() {

@@ -3,6 +3,7 @@
 #include "coupler/block_lattice.h"
 #include "coupler/phase_slots.h"
 #include "coupler/run_size.h"
+#include "coupler/thin_walls.h"
 #include "scene/scene_loader.h"
 #include "scene/term_registry.h"
 
@@ -49,6 +50,8 @@ int check_scene(const CheckOptions& options, std::ostream& out, std::ostream& er
     return 2;
   }
   if (!problem.empty()) err << "coupler: warning (--force-size): " << problem << "\n";
+  for (const std::string& warning : thin_wall_warnings(scene))
+    err << "coupler: warning: " << warning << "\n";
   out << "# " << options.scene_path << ": valid scene '" << scene.name << "' (phases:";
   for (const auto& phase : scene.phases()) out << " " << phase;
   out << ")\n# size: " << describe_run_size(size) << "\n";

@@ -108,9 +108,9 @@ struct CouplingSettings {
   double submerged_saturation = 0.8;  ///< water fraction from which soil is submerged
   double wet_saturation = 0.1;        ///< water fraction from which soil is wet
   bool implicit_drag = true;          ///< the drag's rate goes to the solvers (implicit drag)
-  /// "truncated" (the soil sums as they are) | "renormalised" (by the wall's share of the support;
-  /// coupler/interaction/wall_kernel_share.h)
-  std::string drag_at_walls = "truncated";
+  /// "renormalised" (by the wall's share of the support; coupler/interaction/wall_kernel_share.h)
+  /// | "truncated" (the soil sums as they are)
+  std::string drag_at_walls = "renormalised";
 };
 
 /// Water phase (table [water]).

@@ -142,16 +142,16 @@ void add_coupling(SceneSchema& s) {
                "explicit drag at the start of the step."));
   s.keys.push_back(
       Key("coupling.drag_at_walls", T::String)
-          .fallback("\"truncated\"")
+          .fallback("\"renormalised\"")
           .one_of({"truncated", "renormalised"})
           .doc("The soil sums of a water particle in soil beside a wall (drag, its rate, "
-               "porosity). \"truncated\": as they are, so the first water row along a wall "
-               "sees too little soil (porosity 0.51 for 0.40) and seeps 25-45 % too fast; "
-               "\"renormalised\": divided by 1 - S, S the share of the particle's kernel "
-               "support inside walls that hold neither water nor soil (the walls acting on "
-               "water, less a wall the soil passes through where it overlaps a soil block; "
-               "moving walls left out; coupler/interaction/wall_kernel_share.h, "
-               "docs/coupling.md)."));
+               "porosity). \"renormalised\" (default since 2026-12-06): divided by 1 - S, S "
+               "the share of the particle's kernel support inside walls that hold neither "
+               "water nor soil (the walls acting on water, less a wall the soil passes through "
+               "where it overlaps a soil block; moving walls left out; "
+               "coupler/interaction/wall_kernel_share.h, docs/coupling.md); \"truncated\": "
+               "as they are, so the first water row along a wall sees too little soil "
+               "(porosity 0.51 for 0.40) and seeps 25-45 % too fast (the model before)."));
   s.keys.push_back(Key("coupling.wet_saturation", T::Float)
                        .fallback("0.1")
                        .above(0)

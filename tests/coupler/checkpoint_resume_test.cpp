@@ -257,6 +257,11 @@ std::string kill_after_checkpoint_and_resume(const std::string& name,
     EXPECT_NE(resumed.output.find("renamed fluid.h5 to water.h5"), std::string::npos)
         << resumed.output;
     EXPECT_FALSE(std::filesystem::exists(out + "/fluid.h5"));
+    EXPECT_NE(resumed.output.find("water.artificial_viscosity_in_soil is newer than the run's "
+                                  "scene; from here on it takes this binary's default, "
+                                  "'drag_limited'"),
+              std::string::npos)
+        << resumed.output;
     // The checkpoints the resumed run wrote name the run's own scene, so it can be resumed again
     // (before: the hash of this binary's re-resolution, refused as "files of two runs").
     EXPECT_EQ(read_json(out + "/checkpoint/latest.json").at("scene_hash"), older_hash);

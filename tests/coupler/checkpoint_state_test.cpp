@@ -250,5 +250,24 @@ TEST(CheckpointKeeper, WritesTheManifestOnlyWhenEverySolverConfirmed) {
   fs::remove_all(dir);
 }
 
+// A resume names the settings a newer binary adds to a run's scene: the keys the run's text lacks,
+// by table (and by array-of-tables header), with the default they take; the run's own keys and
+// repeated tables are matched line by line, so nothing the run had is reported.
+TEST(KeysAddedSince, NamesOnlyTheKeysTheRunsTextLacks) {
+  const std::string run =
+      "[coupling]\nimplicit_drag = true\n\n[water]\nalpha = 0.05\n\n    [[water.reservoir]]\n"
+      "    level = 0.35\n\n    [[water.reservoir]]\n    level = 0.3\n";
+  const std::string now =
+      "[coupling]\ndrag_at_walls = 'renormalised'\nimplicit_drag = true\n\n[water]\nalpha = 0.05\n"
+      "\n    [[water.reservoir]]\n    absorbing = false\n    level = 0.35\n\n"
+      "    [[water.reservoir]]\n    absorbing = false\n    level = 0.3\n";
+  const std::vector<std::string> added = keys_added_since(run, now);
+  ASSERT_EQ(added.size(), 3u);
+  EXPECT_EQ(added[0], "coupling.drag_at_walls = 'renormalised'");
+  EXPECT_EQ(added[1], "[[water.reservoir]] absorbing = false");
+  EXPECT_EQ(added[2], "[[water.reservoir]] absorbing = false");
+  EXPECT_TRUE(keys_added_since(now, now).empty());
+}
+
 }  // namespace
 }  // namespace porosph::coupler
