@@ -358,7 +358,13 @@ def main():
               "converge (none / 4.85 s / none; docs/validation-studies.md, 'Hydraulic heave at "
               "three resolutions'), so its verdict fails whatever one level gives. The rockfill, "
               "heave-variant and Forchheimer rows predate those changes (and the rockfill rows the "
-              "pairwise implicit drag) until they are rerun.",
+              "pairwise implicit drag) until they are rerun."
+              " Since 2026-12-06 the soil sums of the water beside walls are renormalised by "
+              "default (`coupling.drag_at_walls`, docs/coupling.md): the fluidized_bed and "
+              "darcy_column rows stay the same to the bit or the printed digit. The heave's "
+              "water passes through the one-layer sheet pile at dp 10 mm (nine tenths of the "
+              "upstream pool's loss; docs/validation-studies.md), so its coarse levels are no "
+              "evidence of convergence either way; `coupler check` now warns about such walls.",
               ""]
     grid_cases = [c["name"] for c in CASES if c["name"].startswith(("heave_s", "heave_fr_s"))]
     rockfill_cases = {c["name"] for c in CASES if c["check"] == "rockfill_overtopping"}

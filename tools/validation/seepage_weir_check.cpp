@@ -52,10 +52,16 @@ GridSeries unit_reference(const Box& layer, double weir_x0, double weir_x1, doub
 /// The FV discharge under the weir's centre and the mean upward gradient over [exit_x0, exit_x1]
 /// on the top (K = 1) with fixed heads on the top cells given per cell (NaN: no flow, under the
 /// weir or without water above it); cells of `cell` m.
-std::pair<double, double> layer_with_top_heads(const Box& layer, double weir_mid, double exit_x0,
-                                               double exit_x1, double cell,
-                                               const std::vector<SolidBlock>& cutoffs,
-                                               const std::vector<double>& top_heads) {
+/// The FV solution of the layer alone with the given heads on its top cells (NaN: no flow).
+struct LayerAlone {
+  double discharge = 0, exit_gradient = 0;
+  std::vector<double> probe_heads;  ///< at the probe points
+};
+
+LayerAlone layer_with_top_heads(const Box& layer, double weir_mid, double exit_x0, double exit_x1,
+                                double cell, const std::vector<SolidBlock>& cutoffs,
+                                const std::vector<double>& top_heads,
+                                const std::vector<std::pair<double, double>>& probe_points) {
   LaplaceProblem problem;
   problem.solids = cutoffs;
   problem.x0 = layer.x0, problem.x1 = layer.x1, problem.y0 = layer.y0, problem.y1 = layer.y1;
@@ -68,8 +74,11 @@ std::pair<double, double> layer_with_top_heads(const Box& layer, double weir_mid
         {Side::kTop, centre - 0.25 * cell, centre + 0.25 * cell, top_heads[i]});
   }
   const LaplaceSolution solution = solve_laplace(problem);
-  return {solution.discharge_across_vertical(weir_mid, layer.y0, layer.y1),
-          solution.mean_outward_gradient(Side::kTop, exit_x0, exit_x1)};
+  LayerAlone out{solution.discharge_across_vertical(weir_mid, layer.y0, layer.y1),
+                 solution.mean_outward_gradient(Side::kTop, exit_x0, exit_x1),
+                 {}};
+  for (const auto& [x, y] : probe_points) out.probe_heads.push_back(solution.head(x, y));
+  return out;
 }
 
 }  // namespace
@@ -211,9 +220,9 @@ SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
     if (top_count[k] > 0 && (centre < weir.x0 || centre > weir.x1))
       top_heads[k] = top_sum[k] / top_count[k];
   }
-  const auto [own_discharge, own_exit_gradient] = layer_with_top_heads(
-      layer, mid, weir.x1, weir.x1 + out.exit_stretch, cell, cutoffs, top_heads);
-  out.discharge_own_heads = out.conductivity * own_discharge;
+  const LayerAlone own = layer_with_top_heads(layer, mid, weir.x1, weir.x1 + out.exit_stretch, cell,
+                                              cutoffs, top_heads, probe_points);
+  out.discharge_own_heads = out.conductivity * own.discharge;
   // The 2.5 mm grid with fixed heads on half of each top cell puts the exit gradient of the
   // pools' means 0.3 % below the extrapolated reference (q 0.24 % below): the exit gradient is
   // scaled by the same grid's value with those means (unit heads) against the reference's.
@@ -223,10 +232,8 @@ SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
     if (centre < weir.x0) unit_heads[k] = 1.0;
     if (centre > weir.x1) unit_heads[k] = 0.0;
   }
-  const double unit_exit_gradient =
-      layer_with_top_heads(layer, mid, weir.x1, weir.x1 + out.exit_stretch, cell, cutoffs,
-                           unit_heads)
-          .second;
+  const LayerAlone unit = layer_with_top_heads(layer, mid, weir.x1, weir.x1 + out.exit_stretch,
+                                               cell, cutoffs, unit_heads, probe_points);
 
   const GridSeries reference =
       unit_reference(layer, weir.x0, weir.x1, out.exit_stretch, cutoffs, probe_points);
@@ -239,7 +246,7 @@ SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
   out.discharge_reference_order = reference.estimates[0].order;
   out.exit_gradient_reference = dh * reference.estimates[1].extrapolated;
   out.exit_gradient_own_heads =
-      own_exit_gradient * reference.estimates[1].extrapolated / unit_exit_gradient;
+      own.exit_gradient * reference.estimates[1].extrapolated / unit.exit_gradient;
   for (std::size_t k = 0; k < probe_points.size(); ++k) {
     SeepageProbe probe;
     probe.x = probe_points[k].first;
@@ -249,6 +256,10 @@ SeepageWeirCheck check_seepage_weir(const std::string& run_dir, double window) {
     // sit on average off the point, where p differs by rho g dy, while the head is smooth.
     probe.pressure = water.pressure(probe.head - probe.y);
     probe.head_reference = out.head_downstream + dh * reference.estimates[2 + k].extrapolated;
+    // The layer alone at the probe: the run's own top heads on the 2.5 mm grid, that grid's error
+    // (the unit-head solution's against the extrapolated reference, times dh) taken out.
+    probe.head_own_heads =
+        own.probe_heads[k] + dh * (reference.estimates[2 + k].extrapolated - unit.probe_heads[k]);
     probe.pressure_reference = water.pressure(probe.head_reference - probe.y);
     out.probes.push_back(probe);
   }

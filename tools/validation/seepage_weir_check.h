@@ -32,6 +32,7 @@ struct SeepageProbe {
   double x = 0, y = 0;
   double pressure = 0, pressure_reference = 0;  ///< [Pa]
   double head = 0, head_reference = 0;          ///< [m]
+  double head_own_heads = 0;  ///< [m] FV of the layer alone with the run's own top heads
   double relative_error() const { return (pressure - pressure_reference) / pressure_reference; }
 };
 
