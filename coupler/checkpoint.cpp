@@ -154,6 +154,19 @@ std::vector<std::string> keys_added_since(const std::string& run_text,
   return added;
 }
 
+std::vector<std::string> newer_key_notices(const std::string& run_text,
+                                           const std::string& resolved_now) {
+  std::vector<std::string> notices;
+  for (const std::string& setting : keys_added_since(run_text, resolved_now)) {
+    const std::size_t eq = setting.find(" = ");
+    notices.push_back(setting.substr(0, eq) +
+                      " is newer than the run's scene; from here on it takes this binary's "
+                      "default, " +
+                      (eq == std::string::npos ? "" : setting.substr(eq + 3)));
+  }
+  return notices;
+}
+
 CheckpointKeeper::CheckpointKeeper(const scene::Scene& scene, const std::string& out_dir,
                                    std::vector<std::string> phases, std::uint32_t last_index,
                                    double time)

@@ -58,6 +58,11 @@ void check_checkpoint_scene(const std::string& out_dir, const CheckpointManifest
 std::vector<std::string> keys_added_since(const std::string& run_text,
                                           const std::string& resolved_now);
 
+/// The resume's notice for each of keys_added_since(): "KEY is newer than the run's scene; from
+/// here on it takes this binary's default, VALUE".
+std::vector<std::string> newer_key_notices(const std::string& run_text,
+                                           const std::string& resolved_now);
+
 /// The coupler side of checkpointing over one run: schedule (run.checkpoint_interval,
 /// run.checkpoint_wall_minutes, or forced on a signal), the pending checkpoint, and its files.
 class CheckpointKeeper {

@@ -129,7 +129,7 @@ void RunSession::load_resume_point() {
   }
   LoopState loop;
   std::optional<CheckpointManifest> manifest;
-  std::vector<std::string> added_keys;
+  std::vector<std::string> newer_keys;
   try {
     manifest = load_latest_checkpoint(out_dir_, record_, loop);
   } catch (const std::exception& e) {
@@ -146,7 +146,7 @@ void RunSession::load_resume_point() {
     scene_ = scene::load_scene_text(record_.resolved_toml, manifest->coupler_file);
     // The run keeps its own text: this binary may resolve it with keys added since the run began
     // (their defaults, said below), and its checkpoints must name the run's hash, not a new one.
-    added_keys = keys_added_since(record_.resolved_toml, scene_.resolved_toml);
+    newer_keys = newer_key_notices(record_.resolved_toml, scene_.resolved_toml);
     scene_.resolved_toml = record_.resolved_toml;
   } catch (const scene::SceneError& e) {
     throw BadInput(std::string("cannot resume: bad scene in the checkpoint: ") + e.what());
@@ -171,14 +171,8 @@ void RunSession::load_resume_point() {
   std::fprintf(stderr, "coupler: resuming %s from checkpoint %u at t = %.9g s (step %llu)\n",
                out_dir_.c_str(), manifest->index, manifest->time,
                static_cast<unsigned long long>(manifest->step));
-  for (const std::string& setting : added_keys) {
-    const std::size_t eq = setting.find(" = ");
-    std::fprintf(stderr,
-                 "coupler: %s is newer than the run's scene; from here on it takes this "
-                 "binary's default, %s\n",
-                 setting.substr(0, eq).c_str(),
-                 eq == std::string::npos ? "" : setting.substr(eq + 3).c_str());
-  }
+  for (const std::string& notice : newer_keys)
+    std::fprintf(stderr, "coupler: %s\n", notice.c_str());
 }
 
 void RunSession::start_solvers() {

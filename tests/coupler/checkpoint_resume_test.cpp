@@ -10,15 +10,15 @@
 #include <map>
 #include <sstream>
 
+#include "coupler/run_directory.h"
 #include "io/snapshot_reader.h"
+#include "tests/coupler/run_comparison.h"
 #include "tests/support/process_support.h"
 
 namespace porosph::testing {
 namespace {
 
 namespace fs = std::filesystem;
-
-constexpr double kRelativeTolerance = 1e-12;
 
 /// The water scene: ~1600 steps, checkpoints at t = 0.01, 0.02, 0.03 s; snapshots every 4 ms
 /// (the scene's output_interval), time-series rows every 1 ms (run.timeseries_interval).
@@ -92,66 +92,6 @@ std::vector<pid_t> solver_pids(const std::string& out) {
   return pids;
 }
 
-/// The rows of a CSV file as numbers (header dropped).
-std::vector<std::vector<double>> csv_rows(const std::string& path) {
-  std::vector<std::vector<double>> rows;
-  std::istringstream text(read_text(path));
-  std::string line;
-  std::getline(text, line);
-  while (std::getline(text, line)) {
-    std::vector<double> row;
-    std::istringstream cells(line);
-    for (std::string cell; std::getline(cells, cell, ',');) row.push_back(std::stod(cell));
-    rows.push_back(row);
-  }
-  return rows;
-}
-
-void expect_close(double a, double b, const std::string& what) {
-  const double scale = std::max({std::abs(a), std::abs(b), 1e-300});
-  if (std::isnan(a) && std::isnan(b)) return;
-  EXPECT_LE(std::abs(a - b), kRelativeTolerance * scale) << what << ": " << a << " vs " << b;
-}
-
-/// Same t column (no duplicate or missing row) and the same values in every row.
-void expect_same_timeseries(const std::string& a, const std::string& b) {
-  const auto rows_a = csv_rows(a + "/timeseries.csv");
-  const auto rows_b = csv_rows(b + "/timeseries.csv");
-  ASSERT_EQ(rows_a.size(), rows_b.size()) << read_text(b + "/timeseries.csv");
-  for (std::size_t r = 0; r < rows_a.size(); ++r) {
-    ASSERT_EQ(rows_a[r].size(), rows_b[r].size());
-    EXPECT_EQ(rows_a[r][0], rows_b[r][0]) << "t of row " << r;
-    if (r > 0) {
-      EXPECT_GT(rows_b[r][0], rows_b[r - 1][0]) << "t must increase (row " << r << ")";
-    }
-    for (std::size_t c = 1; c < rows_a[r].size(); ++c) {
-      expect_close(rows_a[r][c], rows_b[r][c],
-                   "row " + std::to_string(r) + " column " + std::to_string(c));
-    }
-  }
-}
-
-/// Same snapshot list, and the last snapshots agree field by field.
-void expect_same_snapshots(const std::string& a, const std::string& b, const std::string& file,
-                           const std::vector<std::string>& f64_fields) {
-  const io::SnapshotReader ra(a + "/" + file), rb(b + "/" + file);
-  const auto sa = ra.snapshots(), sb = rb.snapshots();
-  ASSERT_EQ(sa.size(), sb.size()) << file;
-  for (std::size_t i = 0; i < sa.size(); ++i) {
-    EXPECT_EQ(sa[i].index, sb[i].index) << file;
-    EXPECT_EQ(sa[i].time, sb[i].time) << file << " snapshot " << i;
-  }
-  const std::uint32_t last = sa.back().index;
-  EXPECT_EQ(ra.read_i64(last, "id").values, rb.read_i64(last, "id").values) << file;
-  for (const std::string& field : f64_fields) {
-    const auto fa = ra.read_f64(last, field), fb = rb.read_f64(last, field);
-    ASSERT_EQ(fa.values.size(), fb.values.size()) << file << " " << field;
-    for (std::size_t k = 0; k < fa.values.size(); ++k) {
-      expect_close(fa.values[k], fb.values[k], file + " " + field + "[" + std::to_string(k) + "]");
-    }
-  }
-}
-
 /// The uninterrupted reference run of a scene, made once per test process.
 const std::string& reference_run(const std::string& name,
                                  std::vector<std::string> (*scene)(const std::string&)) {
@@ -171,18 +111,6 @@ std::size_t rows_before_checkpoint(const std::string& out) {
   return state.at("loop").at("row_index").get<std::size_t>();
 }
 
-/// The run directory's scene hash (FNV-1a over the resolved text, coupler/run_directory.cpp).
-std::string fnv_hash(const std::string& text) {
-  std::uint64_t hash = 14695981039346656037ull;
-  for (const unsigned char c : text) {
-    hash ^= c;
-    hash *= 1099511628211ull;
-  }
-  char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
-  return hex;
-}
-
 /// Makes the killed run look like one a binary without the key `water.artificial_viscosity_in_soil`
 /// wrote: the line is dropped from the checkpoint's resolved scene, and the hashes in latest.json
 /// and run.json are those of the shorter text. Returns that hash.
@@ -197,13 +125,13 @@ std::string drop_a_defaulted_key(const std::string& out) {
   EXPECT_NE(at, std::string::npos) << text;
   if (at != std::string::npos) text.erase(at, line.size());
   state["record"]["resolved_toml"] = text;
-  manifest["scene_hash"] = fnv_hash(text);
+  manifest["scene_hash"] = coupler::scene_hash(text);
   auto record = read_json(out + "/run.json");
-  record["scene"]["hash"] = fnv_hash(text);
+  record["scene"]["hash"] = coupler::scene_hash(text);
   write_text(coupler_file, state.dump(1));
   write_text(latest, manifest.dump(2));
   write_text(out + "/run.json", record.dump(2));
-  return fnv_hash(text);
+  return coupler::scene_hash(text);
 }
 
 /// Starts the run and, once the first checkpoint is complete and a row past it is in
