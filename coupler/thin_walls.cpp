@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "sph/geometry.h"
+
 namespace porosph::coupler {
 
 int separating_wall_layers(double h, double dp) {
@@ -60,7 +62,7 @@ std::vector<std::string> thin_wall_warnings(const scene::Scene& scene) {
     for (const std::string& phase : wall.phases) on_water = on_water || phase == "water";
     if (!on_water) continue;
     for (std::size_t axis = 0; axis < wall.min.size() && axis < wall.max.size(); ++axis) {
-      const long layers = std::lround((wall.max[axis] - wall.min[axis]) / dp);
+      const long layers = sph::lattice_count(wall.min[axis], wall.max[axis], dp);  // as filled
       if (layers >= needed) continue;
       // A wall with water on one side only (a floor, a lid, an end wall) needs fewer layers.
       if (!water_beside(scene, wall, axis, -1, 2.0 * scene.h()) ||
