@@ -6,6 +6,7 @@
 #include "fluid_solver/moving_walls.h"
 #include "fluid_solver/taylor_green_initial.h"
 #include "sph/geometry.h"
+#include "sph/wall_occluders.h"
 
 namespace porosph::water {
 
@@ -55,13 +56,29 @@ InitialParticles<D> initial_particles(const scene::Scene& s, const WaterParams<D
   std::vector<double> wall_remove_at;
   std::vector<std::int32_t> wall_motion;
   const std::vector<std::int32_t> motion = MovingWalls<D>::motion_of_water_walls(s);
+  std::vector<std::int32_t> wall_side;
+  std::vector<Vec> wall_points, covering;  // covering: the walls' own lattices (hydrostatic_state)
+  std::vector<std::int32_t> point_side;
+  sph::ThinWallSet<D> thin =
+      sph::thin_walls_of<D>(s, water_walls, "water", params.two_sided_thin_walls);
   for (std::size_t j = 0; j < water_walls.size(); ++j) {
     const scene::Shape& wall = water_walls[j];
-    for (const Vec& x : sph::fill_shape<D>(wall, dp)) {
+    wall_points.clear(), point_side.clear();
+    if (thin.occluder_of_wall[j] >= 0) {
+      sph::two_sided_wall_fill<D>(wall, thin.axis_of_wall[j], thin.occluder_of_wall[j], params.h,
+                                  dp, wall_points, point_side);
+    } else {
+      wall_points = sph::fill_shape<D>(wall, dp);
+      point_side.assign(wall_points.size(), 0);
+    }
+    for (std::size_t i = 0; i < wall_points.size(); ++i) {
+      const Vec& x = wall_points[i];
       Vec wrapped = x;  // along periodic axes the domain itself closes the flow: no wall beyond it
       box.wrap(wrapped);
       if (wrapped != x) continue;
       walls.push_back(x);
+      wall_side.push_back(point_side[i]);
+      if (point_side[i] <= 0 && sph::inside_shape<D>(wall, x, dp)) covering.push_back(x);
       wall_remove_at.push_back(wall.remove_at);
       wall_motion.push_back(motion[j]);
       if (wall.remove_at >= 0.0 &&
@@ -88,11 +105,13 @@ InitialParticles<D> initial_particles(const scene::Scene& s, const WaterParams<D
     P.sound_speed[i] = params.eos.c0();
     P.remove_at[i] = wall ? wall_remove_at[i - P.n_free] : -1.0;
     P.wall_motion[i] = wall ? wall_motion[i - P.n_free] : -1;
+    P.wall_side[i] = wall ? wall_side[i - P.n_free] : 0;
     P.id[i] = static_cast<std::int64_t>(i);
     P.fixed[i] = wall ? 1 : 0;
   }
   if (params.hydrostatic_initial) {
-    hydrostatic_state<D>(P.position.data(), P.n_free, P.position.data() + P.n_free, P.wall_count(),
+    // A thin wall's two sides: one copy of the wall's own lattice covers the water beneath it.
+    hydrostatic_state<D>(P.position.data(), P.n_free, covering.data(), covering.size(),
                          params.gravity, dp, params.eos, P.pressure.data(), P.density.data());
   }
   if (s.water->initial_velocity == "taylor_green") {  // inflow-zone particles keep their own
@@ -112,6 +131,7 @@ InitialParticles<D> initial_particles(const scene::Scene& s, const WaterParams<D
   // particles are too small and a still tank slowly settles to pressures ~2 % too high at depth).
   for (std::size_t i = 0; i < n; ++i) P.mass[i] = P.density[i] * params.volume;
   P.density_previous = P.density;
+  out.occluders = std::move(thin.occluders);
   return out;
 }
 

@@ -7,6 +7,7 @@
 #include "fluid_solver/water_particles.h"
 #include "scene/scene.h"
 #include "sph/domain_box.h"
+#include "sph/wall_occluders.h"
 
 namespace porosph::water {
 
@@ -14,6 +15,9 @@ template <int D>
 struct InitialParticles {
   WaterParticles<D> particles;
   double next_wall_removal = -1.0;  ///< earliest wall removal time [s] (< 0: none)
+  /// The thin walls filled on both sides (sph/wall_occluders.h; water.thin_walls = "separating"),
+  /// indexed as the particles' wall_side tags.
+  sph::WallOccluders<D> occluders;
 };
 
 /// Water from scene.water.blocks (lattice points inside a wall acting on water or inside an inflow

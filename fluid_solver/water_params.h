@@ -35,6 +35,9 @@ struct WaterParams : sph::ParticleSpacing {  // dp, h, volume
   int euler_every = 40;            ///< modified Verlet: Euler step period
   double cfl = 0.2, c_a = 0.25, viscous_coefficient = 0.125;
   bool hydrostatic_initial = true;
+  /// water.thin_walls = "separating": thin walls between two bodies of water are filled once per
+  /// side and hide the pairs across them (sph/wall_occluders.h).
+  bool two_sided_thin_walls = false;
   /// run.kernel_gradient = "particle": per-particle gradient renormalisation (particle_gradient.h).
   bool particle_gradient = false;
   /// run.kernel_gradient = "particle_matrix": the matrix form of it (particle_gradient.h).
@@ -102,6 +105,7 @@ struct WaterParams : sph::ParticleSpacing {  // dp, h, volume
     p.c_a = s.run.c_a;
     p.viscous_coefficient = s.run.viscous_coefficient;
     p.hydrostatic_initial = w.hydrostatic_initial;
+    p.two_sided_thin_walls = on("thin_walls_two_sided");
     p.particle_gradient = s.run.kernel_gradient == "particle";
     p.particle_gradient_matrix = s.run.kernel_gradient == "particle_matrix";
     scene::checked_choice("water.pressure_gradient_in_soil", w.pressure_gradient_in_soil,

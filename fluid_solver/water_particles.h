@@ -39,6 +39,9 @@ struct WaterParticles {
   std::vector<std::int32_t> zone;
   /// Walls: index of the moving wall it belongs to (moving_walls.h); -1 for fixed walls and water.
   std::vector<std::int32_t> wall_motion;
+  /// Walls: the side of a thin wall whose water sees it (sph::wall_side_tag; 0 for water and for
+  /// the particles of other walls). Array resizes fill 0.
+  std::vector<std::int32_t> wall_side;
 
   // Derived per step, not part of the particle state (not resized, permuted or checkpointed with
   // the arrays above; whoever fills them sizes them):
@@ -117,7 +120,7 @@ struct WaterParticles {
     fn(p.interaction...), fn(p.wall_velocity...), fn(p.density...), fn(p.density_previous...);
     fn(p.density_rate...), fn(p.pressure...), fn(p.sound_speed...), fn(p.mass...);
     fn(p.remove_at...), fn(p.id...), fn(p.fixed...), fn(p.zone...), fn(p.viscosity_cut...);
-    fn(p.drag_rate...), fn(p.wall_motion...);
+    fn(p.drag_rate...), fn(p.wall_motion...), fn(p.wall_side...);
   }
 
   sph::PermutationScratch<Vec, double, std::int64_t, std::int32_t, std::uint8_t> scratch_;

@@ -132,6 +132,9 @@ struct WaterPhase {
   std::string pressure_gradient_in_soil = "symmetric";
   double particle_shifting = 0.0;   ///< A of the Fickian particle shifting (Lind 2012); 0: off
   bool hydrostatic_initial = true;  ///< initial density from hydrostatic pressure (inverse eq. 4)
+  /// "separating": thin box walls between two bodies of water part them at any thickness
+  /// (sph/wall_occluders.h) | "shared": their particles are neighbours of both sides
+  std::string thin_walls = "separating";
   std::string initial_velocity = "none";   ///< "none" (at rest) | "taylor_green"
   double taylor_green_speed = 0.0;         ///< amplitude U of the Taylor-Green field [m/s]
   double taylor_green_wavelength = 0.0;    ///< its wavelength L = 2 pi / k [m]
@@ -216,6 +219,9 @@ struct SoilPhase {
   std::string initial_stress = "none";  ///< "geostatic" | "none"
   std::string k0 = "jaky";              ///< "jaky" (1 - sin phi) | "elastic" (nu / (1 - nu))
   double damping_duration = 0.0;        ///< [s] initial damping stage; 0: none
+  /// "separating": thin box walls in the soil part it at any thickness (sph/wall_occluders.h) |
+  /// "shared": their particles are neighbours of both sides
+  std::string thin_walls = "separating";
   double damping_coefficient = 0.02;    ///< D = coefficient sqrt(E / (rho h^2))
   int stress_filter_every = 0;          ///< stress filter every N steps; 0: off
   std::string stress_filter = "mls";    ///< its weights: "shepard" | "mls"

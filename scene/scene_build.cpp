@@ -105,6 +105,7 @@ Scene build_scene(const toml::table& root) {
     w.pressure_gradient_in_soil = text_of(*water, "pressure_gradient_in_soil");
     w.particle_shifting = *(*water)["particle_shifting"].value<double>();
     w.hydrostatic_initial = *(*water)["hydrostatic_initial"].value<bool>();
+    w.thin_walls = text_of(*water, "thin_walls");
     w.artificial_viscosity_at_walls = *(*water)["artificial_viscosity_at_walls"].value<bool>();
     w.initial_velocity = text_of(*water, "initial_velocity");
     w.taylor_green_speed = (*water)["taylor_green_speed"].value<double>().value_or(0.0);

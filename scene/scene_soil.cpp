@@ -140,6 +140,7 @@ SoilPhase build_soil_phase(const toml::table& soil) {
   SoilPhase p;
   p.solver = text_of(soil, "solver");
   p.wall_condition = text_of(soil, "wall_condition");
+  p.thin_walls = text_of(soil, "thin_walls");
   p.alpha = *soil["alpha"].value<double>();
   p.beta = *soil["beta"].value<double>();
   p.artificial_stress_epsilon = *soil["artificial_stress_epsilon"].value<double>();

@@ -5,6 +5,7 @@
 #include "porous/seepage_laws.h"
 #include "scene/scene_schema_builder.h"
 #include "scene/term_registry.h"
+#include "scene/thin_walls.h"
 
 namespace porosph::scene::term_detail {
 namespace {
@@ -144,6 +145,25 @@ void add_soil_terms(std::vector<TermSpec>& t) {
                              .fallback("\"no_slip\"")
                              .one_of({"no_slip", "free_slip"})
                              .doc("Velocity condition at wall particles.")}));
+  t.push_back(soil_term(
+      "thin_walls_two_sided",
+      "Box walls too thin to part the soil on their two sides (fewer than 2 (ceil(2h / dp) - 1) "
+      "layers, soil within 2h of both faces) are filled once per side and hide every pair "
+      "across their mid-plane; sph/wall_occluders.h.",
+      "a thin wall (scene/thin_walls.h) acting on soil and soil.thin_walls = \"separating\"",
+      [](const Scene& s) {
+        return soil(s).thin_walls == "separating" && has_thin_walls(s, "soil");
+      },
+      {Key("soil.thin_walls", T::String)
+           .fallback("\"separating\"")
+           .one_of({"separating", "shared"})
+           .doc("Box walls acting on soil that are thinner than 2m layers (m = ceil(2h / dp) - "
+                "1; 4 at h = 1.2 dp) with soil within 2h of both faces (a sheet pile in the "
+                "ground). \"separating\": each side gets max(L, m) wall layers of its own, seen "
+                "only from that side (normal: out of the wall into that side), and no soil pair "
+                "interacts across the wall's mid-plane (sph/wall_occluders.h); \"shared\": the "
+                "soil on the two sides are neighbours through the wall and its particles take "
+                "the stress of both.")}));
   t.push_back(
       soil_term("geostatic_initial_stress",
                 "At-rest initial stress from the weight above; "

@@ -4,6 +4,7 @@
 
 #include "scene/scene_schema_builder.h"
 #include "scene/term_registry.h"
+#include "scene/thin_walls.h"
 
 namespace porosph::scene::term_detail {
 namespace {
@@ -221,6 +222,26 @@ void add_water_terms(std::vector<TermSpec>& t) {
                    "fluid_solver/wall_boundary.h.",
                    "walls acting on water and water.wall_condition = \"free_slip\"",
                    [](const Scene& s) { return has_water_walls(s) && !no_slip(s); }));
+  t.push_back(term(
+      "thin_walls_two_sided",
+      "Box walls too thin to part two bodies of water (fewer than 2 (ceil(2h / dp) - 1) "
+      "layers, water within 2h of both faces) are filled once per side and hide every pair "
+      "across their mid-plane; sph/wall_occluders.h.",
+      "a thin wall (scene/thin_walls.h) acting on water and water.thin_walls = \"separating\"",
+      [](const Scene& s) {
+        return water(s).thin_walls == "separating" && has_thin_walls(s, "water");
+      },
+      {Key("water.thin_walls", T::String)
+           .fallback("\"separating\"")
+           .one_of({"separating", "shared"})
+           .doc("Box walls acting on water that are thinner than 2m layers (m = ceil(2h / dp) "
+                "- 1; 4 at h = 1.2 dp) with water within 2h of both faces. \"separating\": "
+                "each side gets max(L, m) wall layers of its own from its face inwards, seen "
+                "only from that side, and no pair of particles interacts across the wall's "
+                "mid-plane, so the wall parts the water at any thickness (sph/wall_occluders.h); "
+                "\"shared\": the wall's L layers, neighbours of the water on both sides, carry "
+                "one side's pressure to the other and let water through under a head "
+                "difference (coupler check warns).")}));
   t.push_back(term("shepard_density_filter",
                    "Shepard re-initialisation of the density; fluid_solver/density_filter.h.",
                    "water.density_filter_every > 0",

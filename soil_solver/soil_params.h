@@ -51,8 +51,11 @@ struct SoilParams : sph::ParticleSpacing {  // dp, h, volume
   double sound_speed = 0.0;  ///< c_s of the CFL limit and the artificial viscosity [m/s]
   SoilArtificialViscosity viscosity;
   ArtificialStressParameters artificial_stress;
-  bool no_slip = true;                ///< default wall condition of the soil phase
-  bool geostatic_initial = false;     ///< initial_stress = "geostatic"
+  bool no_slip = true;             ///< default wall condition of the soil phase
+  bool geostatic_initial = false;  ///< initial_stress = "geostatic"
+  /// soil.thin_walls = "separating": thin walls in the soil are filled once per side and hide the
+  /// pairs across them (sph/wall_occluders.h).
+  bool two_sided_thin_walls = false;
   double damping_duration = 0.0;      ///< [s]; 0: no damping stage
   double damping_coefficient = 0.02;  ///< D = coefficient sqrt(E / (rho h^2))
   double cfl = 0.2, c_a = 0.25;
@@ -88,6 +91,7 @@ struct SoilParams : sph::ParticleSpacing {  // dp, h, volume
     p.no_slip = scene::checked_choice("soil.wall_condition", soil.wall_condition,
                                       {"no_slip", "free_slip"}) == "no_slip";
     p.geostatic_initial = on("geostatic_initial_stress");
+    p.two_sided_thin_walls = on("thin_walls_two_sided");
     p.damping_duration = on("damping_stage") ? soil.damping_duration : 0.0;
     p.damping_coefficient = soil.damping_coefficient;
     p.cfl = s.run.cfl;

@@ -40,6 +40,9 @@ struct SoilParticles {
   std::vector<std::uint8_t> no_slip;   ///< fixed: 1 no-slip, 0 free-slip
   std::vector<std::uint8_t> wet;       ///< has touched water (sticky; wet_cohesion_loss)
   std::vector<std::int32_t> load;      ///< index of the surface load it carries; -1: none
+  /// Walls: the side of a thin wall whose soil sees it (sph::wall_side_tag; 0 for soil and for the
+  /// particles of other walls).
+  std::vector<std::int32_t> wall_side;
 
   // Derived per step, not part of the particle state (not resized, permuted or checkpointed with
   // the arrays above; whoever fills them sizes them):
@@ -65,7 +68,7 @@ struct SoilParticles {
         fn(density);
     fn(density_rate), fn(reference_density), fn(mass), fn(porosity), fn(plastic_strain);
     fn(saturation), fn(weight_ratio), fn(wet);
-    fn(remove_at), fn(id), fn(material), fn(fixed), fn(no_slip), fn(load);
+    fn(remove_at), fn(id), fn(material), fn(fixed), fn(no_slip), fn(load), fn(wall_side);
   }
 
   /// Re-orders every array: new[i] = old[order[i]]; `order` must keep free before fixed.

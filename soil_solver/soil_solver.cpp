@@ -16,6 +16,7 @@
 #include "sph/lattice_gradient.h"
 #include "sph/overlap_scatter.h"
 #include "sph/particle_removal.h"
+#include "sph/wall_occluders.h"
 
 namespace porosph::soil {
 namespace {
@@ -42,6 +43,7 @@ SoilSolver<D>::SoilSolver(const scene::Scene& s)
     double remove_at;
     bool no_slip;
     Vec normal;
+    std::int32_t side = 0;  ///< thin walls: sph::wall_side_tag
   };
   std::vector<NewParticle> free, fixed;
   const double dp = params_.dp;
@@ -67,15 +69,34 @@ SoilSolver<D>::SoilSolver(const scene::Scene& s)
   }
   int wall_reach = 2;  // probe past the thickest wall
   for (const auto& wall : walls) wall_reach = std::max(wall_reach, wall.layers + 2);
-  for (const auto& wall : walls) {
+  sph::ThinWallSet<D> thin = sph::thin_walls_of<D>(s, walls, "soil", params_.two_sided_thin_walls);
+  std::vector<Vec> points;
+  std::vector<std::int32_t> sides;
+  for (std::size_t j = 0; j < walls.size(); ++j) {
+    const scene::Shape& wall = walls[j];
     const bool no_slip =
         wall.condition == "default" ? params_.no_slip : wall.condition == "no_slip";
-    for (const Vec& x : sph::fill_shape<D>(wall, dp)) {
+    points.clear(), sides.clear();
+    const int axis = thin.axis_of_wall[j];
+    if (axis >= 0) {
+      sph::two_sided_wall_fill<D>(wall, axis, thin.occluder_of_wall[j], params_.h, dp, points,
+                                  sides);
+    } else {
+      points = sph::fill_shape<D>(wall, dp);
+      sides.assign(points.size(), 0);
+    }
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const Vec& x = points[i];
       Vec wrapped = x;
       box_.wrap(wrapped);
       if (wrapped != x) continue;
-      const Vec normal = wall_normal_from_geometry<D>(x, walls, dp, wall_reach);
-      fixed.push_back({x, -1, wall.remove_at, no_slip, normal});
+      Vec normal = Vec::Zero();  // a thin wall's side: out of the wall into that side
+      if (sides[i] != 0) {
+        normal[axis] = sides[i] > 0 ? 1.0 : -1.0;
+      } else {
+        normal = wall_normal_from_geometry<D>(x, walls, dp, wall_reach);
+      }
+      fixed.push_back({x, -1, wall.remove_at, no_slip, normal, sides[i]});
       if (wall.remove_at >= 0.0 &&
           (scalars_.next_wall_removal < 0.0 || wall.remove_at < scalars_.next_wall_removal))
         scalars_.next_wall_removal = wall.remove_at;
@@ -108,7 +129,10 @@ SoilSolver<D>::SoilSolver(const scene::Scene& s)
     P.material[i] = q.material;
     P.fixed[i] = i < P.n_free ? 0 : 1;
     P.no_slip[i] = q.no_slip ? 1 : 0;
+    P.wall_side[i] = q.side;
   }
+  occluders_ = std::move(thin.occluders);
+  neighbours_.set_occluders(&occluders_);
   if (s.water) mark_initially_submerged<D>(s.water->blocks, params_, P);
   if (params_.geostatic_initial) apply_geostatic_stress<D>(params_, P);
   loads_.tag(P, params_.dp, params_.materials);

@@ -27,7 +27,7 @@ class CellOrder {
   /// The neighbours of P's particles (the first P.n_free free) within 2h in `box`.
   template <class Particles>
   void search(NeighbourList<D>& list, const Particles& P, const DomainBox<D>& box) const {
-    list.build(P.position.data(), P.size(), P.n_free, reach_, box);
+    list.build(P.position.data(), P.size(), P.n_free, reach_, box, wall_tags(P, 0));
   }
 
   /// Re-sorts P by cell (the fixed particles too with `sort_fixed`), moves `overlap_index` with
@@ -57,6 +57,16 @@ class CellOrder {
   }
 
  private:
+  /// The particles' thin-wall side tags (sph/wall_occluders.h), where the container has them.
+  template <class Particles>
+  static auto wall_tags(const Particles& P, int) -> decltype(P.wall_side.data()) {
+    return P.wall_side.data();
+  }
+  template <class Particles>
+  static const std::int32_t* wall_tags(const Particles&, long) {
+    return nullptr;
+  }
+
   double reach_;
   std::vector<std::int32_t> order_, inverse_;  ///< scratch of a re-sort
 };

@@ -1,7 +1,9 @@
 // Writing and restoring a solver's particle container (structure of arrays) in a checkpoint file
 // (io/checkpoint_file.h). Every array the container's for_each_array visits is stored, as
 // "particles_NN" in visiting order, so an array added to a container is checkpointed without
-// further code; restoring checks the array count and each array's element type and width.
+// further code; restoring checks the array count and each array's element type and width. Arrays
+// are only ever added at the end of a container's list: restoring a checkpoint written before an
+// array was added fills that array with zeros (value-initialised), so older runs still resume.
 // Elements: double, int64, int32, uint8, and fixed-size Eigen matrices of doubles (Vec<D>, 3x3).
 #pragma once
 
@@ -30,6 +32,16 @@ struct Element<T, std::void_t<typename T::Scalar, decltype(T::SizeAtCompileTime)
   static constexpr std::size_t cols = static_cast<std::size_t>(T::SizeAtCompileTime);
   static_assert(sizeof(T) == cols * sizeof(Scalar), "Eigen element must be packed");
 };
+
+/// 0 for a scalar, the zero matrix for an Eigen element.
+template <class T>
+T zero_element() {
+  if constexpr (std::is_arithmetic_v<T>) {
+    return T{};
+  } else {
+    return T::Zero();
+  }
+}
 
 inline std::string array_name(int k) {
   char name[32];
@@ -68,9 +80,15 @@ template <class Particles>
 void read_particle_arrays(const io::CheckpointReader& in, Particles& particles) {
   using namespace checkpoint_detail;
   const std::int64_t count = in.get_i64("particles_count");
+  const std::int64_t stored = in.get_i64("particles_arrays");
   int k = 0;
   particles.for_each_array([&](auto& array) {
     using T = typename std::decay_t<decltype(array)>::value_type;
+    if (k >= stored) {  // an array added to the container after the checkpoint was written
+      ++k;
+      array.assign(static_cast<std::size_t>(count), zero_element<T>());
+      return;
+    }
     const std::string name = array_name(k++);
     const std::size_t rows = in.rows(name, Element<T>::cols);
     if (static_cast<std::int64_t>(rows) != count) {
@@ -80,7 +98,7 @@ void read_particle_arrays(const io::CheckpointReader& in, Particles& particles) 
     array.resize(rows);
     in.read(name, scalars(array), Element<T>::cols);
   });
-  if (in.get_i64("particles_arrays") != k) {
+  if (stored > k) {
     throw std::runtime_error(in.path() + ": written by a solver with another particle layout");
   }
   particles.n_free = static_cast<std::size_t>(in.get_i64("particles_n_free"));

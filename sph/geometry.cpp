@@ -9,8 +9,6 @@
 namespace porosph::sph {
 namespace {
 
-constexpr double kTolerance = 1e-9;  // relative to dp
-
 std::string shape_name(const scene::Shape& s) {
   return s.label.empty() ? std::string("shape") : "shape '" + s.label + "'";
 }
@@ -53,11 +51,6 @@ std::vector<double> lattice_axis(double min, double max, double dp) {
 }
 
 }  // namespace
-
-long lattice_count(double min, double max, double dp) {
-  if (!(max > min) || !(dp > 0)) return 0;
-  return std::max(0L, static_cast<long>(std::ceil((max - min) / dp - 0.5 - kTolerance)));
-}
 
 bool point_in_polygon(const std::vector<std::vector<double>>& v, double x, double y) {
   bool inside = false;

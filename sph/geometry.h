@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "scene/scene.h"
+#include "scene/thin_walls.h"
 #include "sph/vector.h"
 
 namespace porosph::sph {
@@ -34,7 +35,8 @@ std::vector<Vec<D>> fill_block_outside_walls(const scene::Shape& block,
 /// Even-odd point-in-polygon test (2D).
 bool point_in_polygon(const std::vector<std::vector<double>>& vertices, double x, double y);
 
-/// Number of lattice centres min + (i + 1/2) dp that lie below max (round-off tolerant).
-long lattice_count(double min, double max, double dp);
+/// Number of lattice centres min + (i + 1/2) dp that lie below max (round-off tolerant;
+/// scene/thin_walls.h).
+using scene::lattice_count;
 
 }  // namespace porosph::sph

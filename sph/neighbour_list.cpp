@@ -16,7 +16,7 @@ constexpr std::size_t kChunk = 256;
 
 template <int D>
 void NeighbourList<D>::build(const Vec<D>* x, std::size_t n, std::size_t n_free, double support,
-                             const DomainBox<D>& box) {
+                             const DomainBox<D>& box, const std::int32_t* wall_tag) {
   const bool search = needs_search(x, n, n_free, support, box);
   n_ = n;
   n_free_ = std::min(n_free, n);
@@ -40,9 +40,9 @@ void NeighbourList<D>::build(const Vec<D>* x, std::size_t n, std::size_t n_free,
     ++search_count_;
   }
   if (box.any_periodic()) {
-    refresh_pairs<true>(x);
+    refresh_pairs<true>(x, wall_tag);
   } else {
-    refresh_pairs<false>(x);
+    refresh_pairs<false>(x, wall_tag);
   }
 }
 
@@ -265,7 +265,7 @@ void NeighbourList<D>::search_candidates(const Vec<D>* x) {
 
 template <int D>
 template <bool kPeriodic>
-void NeighbourList<D>::refresh_pairs(const Vec<D>* x) {
+void NeighbourList<D>::refresh_pairs(const Vec<D>* x, const std::int32_t* wall_tag) {
   // The pair lists from the candidates at the current positions; same chunks as the search, each
   // thread writes its chunks' lists to its own buffer (branch-free keep, square roots of the kept
   // pairs only).
@@ -291,6 +291,21 @@ void NeighbourList<D>::refresh_pairs(const Vec<D>* x) {
         used += static_cast<std::size_t>(r2 < support2);
       }
     };
+    // With occluders: the same, less the pairs a thin wall hides (x_b = x_a - x_ab, the pair's
+    // own segment also across a periodic boundary).
+    auto keep_visible = [&](std::size_t a, const Vec<D>& xa, const std::int32_t* c0,
+                            const std::int32_t* c1) {
+      const std::int32_t tag_a = wall_tag != nullptr ? wall_tag[a] : 0;
+      for (const std::int32_t* c = c0; c != c1; ++c) {
+        Vec<D> dx = xa - x[*c];
+        if constexpr (kPeriodic) box_.minimum_image(dx);
+        const double r2 = dx.squaredNorm();
+        if (!(r2 < support2)) continue;
+        const std::int32_t tag_b = wall_tag != nullptr ? wall_tag[*c] : 0;
+        if (occluders_->hides(xa, tag_a, xa - dx, tag_b)) continue;
+        buffer[used++] = Pair{dx, r2, *c};
+      }
+    };
 #pragma omp for schedule(dynamic, 1)
     for (std::int64_t chunk = 0; chunk < chunks; ++chunk) {
       chunk_owner_[chunk] = t;
@@ -303,9 +318,15 @@ void NeighbourList<D>::refresh_pairs(const Vec<D>* x) {
         const std::uint32_t* o = &candidate_offsets_[3 * a];
         const Vec<D> xa = x[a];
         offsets_[3 * a] = static_cast<std::uint32_t>(used);
-        keep_in_range(xa, candidates + o[0], candidates + o[1]);
-        offsets_[3 * a + 1] = static_cast<std::uint32_t>(used);
-        keep_in_range(xa, candidates + o[1], candidates + o[2]);
+        if (occluders_ != nullptr) {
+          keep_visible(a, xa, candidates + o[0], candidates + o[1]);
+          offsets_[3 * a + 1] = static_cast<std::uint32_t>(used);
+          keep_visible(a, xa, candidates + o[1], candidates + o[2]);
+        } else {
+          keep_in_range(xa, candidates + o[0], candidates + o[1]);
+          offsets_[3 * a + 1] = static_cast<std::uint32_t>(used);
+          keep_in_range(xa, candidates + o[1], candidates + o[2]);
+        }
         offsets_[3 * a + 2] = static_cast<std::uint32_t>(used);
         for (std::size_t k = offsets_[3 * a]; k < used; ++k) buffer[k].r = std::sqrt(buffer[k].r);
       }

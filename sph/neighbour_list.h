@@ -22,6 +22,9 @@
 // counting-sorted by cell (free before fixed within a cell); OpenMP threads take chunks of
 // particles dynamically and append their candidates, then (refresh) their lists, to their own
 // buffer (no atomics, no copy). All buffers are reused: no allocation in steady state.
+//
+// Occluders (set_occluders, sph/wall_occluders.h): the pairs that a thin wall hides are left out
+// of the lists at every build, from the current positions and the particles' wall side tags.
 #pragma once
 
 #include <cstddef>
@@ -31,6 +34,7 @@
 #include "sph/cell_grid.h"
 #include "sph/domain_box.h"
 #include "sph/vector.h"
+#include "sph/wall_occluders.h"
 
 namespace porosph::sph {
 
@@ -54,8 +58,15 @@ class NeighbourList {
   /// Builds the lists of the n particles at x (first n_free free). Positions must lie inside the
   /// box along periodic axes (wrapped). Non-finite positions are tolerated (they get no neighbours
   /// beyond chance) so that the caller can report them.
+  /// `wall_tag` (n entries, wall_side_tag; null: all 0) is read only with occluders set.
   void build(const Vec<D>* x, std::size_t n, std::size_t n_free, double support,
-             const DomainBox<D>& box);
+             const DomainBox<D>& box, const std::int32_t* wall_tag = nullptr);
+
+  /// The thin walls whose hidden pairs build() leaves out (null or empty: none). Kept by pointer:
+  /// it must outlive the list.
+  void set_occluders(const WallOccluders<D>* occluders) {
+    occluders_ = occluders != nullptr && !occluders->empty() ? occluders : nullptr;
+  }
 
   /// Verlet skin [m] (>= 0; 0: a cell search on every build() that sees a moved particle).
   void set_skin(double skin) {
@@ -104,13 +115,14 @@ class NeighbourList {
   template <bool kPeriodic>
   void search_candidates(const Vec<D>* x);
   template <bool kPeriodic>
-  void refresh_pairs(const Vec<D>* x);
+  void refresh_pairs(const Vec<D>* x, const std::int32_t* wall_tag);
   int stencil_of(std::int64_t cell, std::int64_t* out) const;
 
   std::size_t n_ = 0, n_free_ = 0, pair_count_ = 0;
   double support_ = 0, skin_ = 0;
   DomainBox<D> box_;
   bool searched_ = false;
+  const WallOccluders<D>* occluders_ = nullptr;
   std::uint64_t search_count_ = 0;
   std::vector<Vec<D>> searched_position_;  ///< positions at the last cell search
   // grid

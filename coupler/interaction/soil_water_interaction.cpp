@@ -9,6 +9,7 @@
 #include "scene/term_registry.h"
 #include "sph/geometry.h"
 #include "sph/kernel_choice.h"
+#include "sph/wall_occluders.h"
 
 namespace porosph::coupler {
 
@@ -52,19 +53,36 @@ InteractionParameters parameters_from_scene(const scene::Scene& s) {
 
 /// The fixed wall particles (n x D, flattened) of the walls that hold neither water nor soil:
 /// those acting on water, less the particles of a wall the soil passes through that lie in a soil
-/// block (there is soil there); moving walls are left out (wall_kernel_share.h).
+/// block (there is soil there); moving walls are left out (wall_kernel_share.h). A thin wall of
+/// `thin` is filled on both sides as in the water solver, `tags` its side tags (0: other walls).
 template <int D>
-std::vector<double> wall_points_without_soil(const scene::Scene& s) {
+std::vector<double> wall_points_without_soil(const scene::Scene& s, const sph::ThinWallSet<D>& thin,
+                                             std::vector<std::int32_t>& tags) {
   std::vector<double> points;
-  for (const scene::Shape& wall : s.walls_acting_on("water")) {
+  const std::vector<scene::Shape> walls = s.walls_acting_on("water");
+  std::vector<sph::Vec<D>> fill;
+  std::vector<std::int32_t> side;
+  for (std::size_t j = 0; j < walls.size(); ++j) {
+    const scene::Shape& wall = walls[j];
     if (!wall.moves_with.empty()) continue;
     const bool cuts_soil = wall.phases.empty() || std::find(wall.phases.begin(), wall.phases.end(),
                                                             "soil") != wall.phases.end();
-    for (const sph::Vec<D>& x : sph::fill_shape<D>(wall, s.run.dp)) {
+    fill.clear(), side.clear();
+    if (thin.occluder_of_wall[j] >= 0) {
+      sph::two_sided_wall_fill<D>(wall, thin.axis_of_wall[j], thin.occluder_of_wall[j], s.h(),
+                                  s.run.dp, fill, side);
+    } else {
+      fill = sph::fill_shape<D>(wall, s.run.dp);
+      side.assign(fill.size(), 0);
+    }
+    for (std::size_t i = 0; i < fill.size(); ++i) {
+      const sph::Vec<D>& x = fill[i];
       bool soil_there = false;
       for (std::size_t b = 0; b < s.soil->blocks.size() && !cuts_soil && !soil_there; ++b)
         soil_there = sph::inside_shape<D>(s.soil->blocks[b], x, s.run.dp);
-      if (!soil_there) points.insert(points.end(), x.data(), x.data() + D);
+      if (soil_there) continue;
+      points.insert(points.end(), x.data(), x.data() + D);
+      tags.push_back(side[i]);
     }
   }
   return points;
@@ -74,8 +92,12 @@ template <int D>
 std::unique_ptr<InteractionEngine> make_engine(const scene::Scene& s, int threads) {
   InteractionParameters p = parameters_from_scene(s);
   p.threads = threads;
+  // The water solver's thin walls (sph/wall_occluders.h): no soil-water pair across them.
+  sph::ThinWallSet<D> thin = sph::thin_walls_of<D>(s, s.walls_acting_on("water"), "water",
+                                                   s.water->thin_walls == "separating");
+  std::vector<std::int32_t> wall_tags;
   if (s.coupling.drag_at_walls == "renormalised") {  // wall_kernel_share.h
-    p.soil_wall_points = wall_points_without_soil<D>(s);
+    p.soil_wall_points = wall_points_without_soil<D>(s, thin, wall_tags);
     p.soil_wall_volume = std::pow(s.run.dp, D);
   }
   const sph::DomainBox<D> box = sph::DomainBox<D>::from_scene(s, 2.0 * s.h());
@@ -83,7 +105,8 @@ std::unique_ptr<InteractionEngine> make_engine(const scene::Scene& s, int thread
                                     s.run.kernel_gradient != "plain");
   return choice.visit([&](const auto& kernel) -> std::unique_ptr<InteractionEngine> {
     using Kernel = std::decay_t<decltype(kernel)>;
-    return std::make_unique<SoilWaterSums<D, Kernel>>(std::move(p), box);
+    return std::make_unique<SoilWaterSums<D, Kernel>>(std::move(p), box, thin.occluders,
+                                                      std::move(wall_tags));
   });
 }
 

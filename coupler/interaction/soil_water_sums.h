@@ -24,6 +24,7 @@
 #include "sph/domain_box.h"
 #include "sph/neighbour_list.h"
 #include "sph/vector.h"
+#include "sph/wall_occluders.h"
 
 namespace porosph::coupler {
 
@@ -74,12 +75,16 @@ class SoilWaterSums final : public InteractionEngine {
   /// Values per soil particle in the per-thread sums: F_i (D components), s_i, lambda_i rho_i^s.
   static constexpr int kStride = D + 2;
 
-  SoilWaterSums(InteractionParameters parameters, const sph::DomainBox<D>& box)
+  /// `occluders`: the thin walls no pair crosses (sph/wall_occluders.h); `wall_tags`: the side
+  /// tags of p.soil_wall_points (empty: all 0).
+  SoilWaterSums(InteractionParameters parameters, const sph::DomainBox<D>& box,
+                sph::WallOccluders<D> occluders = {}, std::vector<std::int32_t> wall_tags = {})
       : p_(std::move(parameters)),
         kernel_(p_.h),
         box_(box),
+        occluders_(std::move(occluders)),
         walls_(std::move(p_.soil_wall_points), p_.soil_wall_volume, kernel_, box,
-               sph::kSolverSkinFraction * kernel_.support()) {
+               sph::kSolverSkinFraction * kernel_.support(), std::move(wall_tags), &occluders_) {
     grid_.set_skin(sph::kSolverSkinFraction * kernel_.support());
   }
 
@@ -331,6 +336,13 @@ class SoilWaterSums final : public InteractionEngine {
       box_.minimum_image(dx);
       r[c] = dx.squaredNorm();
     }
+    if (!occluders_.empty()) {  // a pair across a thin wall: out of reach (W = 0, not near)
+      for (std::size_t c = 0; c < count; ++c) {
+        Vec dx = x_a - soil_[soil_index[c]].position;
+        box_.minimum_image(dx);
+        if (occluders_.hides(x_a, 0, x_a - dx, 0)) r[c] = std::numeric_limits<double>::infinity();
+      }
+    }
     for (std::size_t c = 0; c < count; ++c) {  // vectorises: no data-dependent branch
       r[c] = std::sqrt(r[c]);
       w[c] = kernel_.w(r[c]);
@@ -359,6 +371,7 @@ class SoilWaterSums final : public InteractionEngine {
   Kernel kernel_;
   sph::DomainBox<D> box_;
   CrossNeighbours<D> grid_;
+  sph::WallOccluders<D> occluders_;   ///< thin walls (before walls_, which points to it)
   WallKernelShare<D, Kernel> walls_;  ///< coupling.drag_at_walls (no points: scale 1)
   std::vector<double> wall_scale_;    ///< per water overlap particle: 1 / (1 - S_wall)
   std::vector<SoilPairData> soil_;

@@ -32,6 +32,7 @@
 #include "proto/coupling_client.h"
 #include "sph/domain_box.h"
 #include "sph/vector.h"
+#include "sph/wall_occluders.h"
 
 namespace porosph::coupler {
 
@@ -43,9 +44,19 @@ class WallKernelShare {
 
   /// `wall_points`: the fixed wall particles (n x D, flattened), each of volume `volume`; no
   /// points: the share is 0 everywhere (renormalisation off).
+  /// `tags`: the points' thin-wall side tags (empty: all 0), `occluders` the thin walls
+  /// (sph/wall_occluders.h; null: none; must outlive this): a wall point that a thin wall hides
+  /// from a water particle is not in its share.
   WallKernelShare(std::vector<double> wall_points, double volume, const Kernel& kernel,
-                  const sph::DomainBox<D>& box, double skin)
-      : points_(std::move(wall_points)), volume_(volume), kernel_(kernel), box_(box) {
+                  const sph::DomainBox<D>& box, double skin, std::vector<std::int32_t> tags = {},
+                  const sph::WallOccluders<D>* occluders = nullptr)
+      : points_(std::move(wall_points)),
+        tags_(std::move(tags)),
+        volume_(volume),
+        kernel_(kernel),
+        box_(box),
+        occluders_(occluders != nullptr && !occluders->empty() ? occluders : nullptr) {
+    tags_.resize(points_.size() / D, 0);
     ids_.resize(points_.size() / D);
     std::iota(ids_.begin(), ids_.end(), std::int64_t{0});
     grid_.set_skin(skin);
@@ -72,6 +83,7 @@ class WallKernelShare {
       for (std::size_t c = 0; c < m; ++c) {
         sph::Vec<D> dx = x_a - Eigen::Map<const sph::Vec<D>>(points_.data() + wall[c] * D);
         box_.minimum_image(dx);
+        if (occluders_ != nullptr && occluders_->hides(x_a, 0, x_a - dx, tags_[wall[c]])) continue;
         share += volume_ * kernel_.w(dx.norm());
       }
       scale[a] = 1.0 / (1.0 - std::min(share, kMaxShare));
@@ -80,10 +92,12 @@ class WallKernelShare {
 
  private:
   std::vector<double> points_;
+  std::vector<std::int32_t> tags_;  ///< per point (sph::wall_side_tag)
   std::vector<std::int64_t> ids_;
   double volume_;
   Kernel kernel_;
   sph::DomainBox<D> box_;
+  const sph::WallOccluders<D>* occluders_;
   CrossNeighbours<D> grid_;
 };
 

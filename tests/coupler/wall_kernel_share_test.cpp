@@ -105,6 +105,55 @@ TEST(WallKernelShare, AWallTheSoilPassesThroughIsNotCounted) {
   EXPECT_NEAR(counted.outputs().water_porosity[at(0, 10)], 0.4, 0.005);
 }
 
+/// Water on both sides of a one-layer wall x in [0.4, 0.41] (dp 10 mm), soil on its left only,
+/// rows y in [0.3, 0.5]: the water lattice of both sides (left first), or the soil's.
+StepState beside_thin_wall(bool soil) {
+  StepState out;
+  for (int i = 0; i < (soil ? 10 : 19); ++i)
+    for (int j = 0; j < 20; ++j) {
+      const double x0 = i < 10 ? 0.3 + (i + 0.5) * kDp : 0.41 + (i - 10 + 0.5) * kDp;
+      const std::vector<double> x = {x0, 0.3 + (j + 0.5) * kDp};
+      if (soil)
+        add_particle(out, x, {0.0, 0.0}, 1600.0, 1600.0 * kDp * kDp, 0.4, 0);
+      else
+        add_particle(out, x, {0.0, 0.01}, 1000.0, 1000.0 * kDp * kDp);
+    }
+  return out;
+}
+
+TEST(WallKernelShare, AThinWallPartsTheWaterFromTheSoilBeyondIt) {
+  // water.thin_walls = "separating" (sph/wall_occluders.h): the water right of the wall sees no
+  // soil through it, and the water left of it sees the wall as a full support (both sides'
+  // fill), so its sums are renormalised as beside a thick wall.
+  scene::Scene s = walled_scene("renormalised", {});
+  s.walls[0].min = {0.4, 0.2};
+  s.walls[0].max = {0.41, 0.6};
+  s.soil->blocks[0].max = {0.4, 0.5};
+  scene::Shape left = s.soil->blocks[0], right = s.soil->blocks[0];
+  right.min = {0.41, 0.3}, right.max = {0.5, 0.5};
+  s.water->blocks = {left, right};
+  const StepState soil = beside_thin_wall(true), water = beside_thin_wall(false);
+  for (const std::string mode : {"separating", "shared"}) {
+    s.water->thin_walls = mode;
+    SoilWaterInteraction interaction(s, 1);
+    interaction.compute(water, soil, 0.0);
+    const auto& n = interaction.outputs().water_porosity;
+    const auto& a = interaction.water_acceleration();
+    const std::size_t beside = at(9, 10), inside = at(4, 10), across = at(10, 10);
+    if (mode == "separating") {
+      EXPECT_EQ(n[across], 1.0);  // no soil seen through the wall: no drag
+      EXPECT_EQ(a[2 * across + 1], 0.0);
+      // As beside the thick wall above (0.5 %: the kernel sum's own error).
+      EXPECT_NEAR(n[beside], 0.4, 0.005);
+      EXPECT_NEAR(a[2 * beside + 1] / a[2 * inside + 1], 1.0, 0.005);
+    } else {
+      // The shared wall: the soil's sums reach through it (the kernel's tail at 2 dp: 0.25 %).
+      EXPECT_LT(n[across], 0.999);
+      EXPECT_LT(a[2 * across + 1], 0.0);
+    }
+  }
+}
+
 TEST(WallKernelShare, SceneRejectsAnUnknownMode) {
   EXPECT_THROW(SoilWaterInteraction(walled_scene("sometimes", {}), 1), std::invalid_argument);
 }

@@ -285,5 +285,43 @@ TEST(SoilSolver, SaturationSetsTheSubmergedWeightAndTheStickyWetFlag) {
   for (std::size_t i = 0; i < P.n_free; ++i) EXPECT_EQ(P.interaction[i], sph::Vec<2>(1.0, 1.0));
 }
 
+TEST(SoilSolver, AThinWallPartsTheSoilOnItsTwoSides) {
+  // A one-layer wall x in [0.2, 0.21] through a sand bed in a container (soil.thin_walls =
+  // "separating", sph/wall_occluders.h): each side gets two tagged layers whose normal points
+  // into it, and after a search no pair of the lists crosses the wall's mid-plane x = 0.205
+  // (the wall's foot on the floor included). With "shared" pairs cross it.
+  for (const std::string mode : {"separating", "shared"}) {
+    scene::Scene s = soil_scene({-0.1, -0.1}, {0.5, 0.5});
+    s.soil->thin_walls = mode;
+    s.soil->blocks = {box({0.0, 0.0}, {0.4, 0.1}, "sand")};
+    s.walls = {box({0.2, 0.0}, {0.21, 0.3}), container({0.0, 0.0}, {0.4, 0.3}, 3)};
+    SoilSolver<2> solver(s);
+    solver.compute_rates();
+    const auto& P = solver.particles();
+    const auto& list = solver.neighbours();
+    std::size_t tagged = 0, crossing = 0;
+    for (std::size_t a = 0; a < P.size(); ++a) {
+      if (P.wall_side[a] != 0) {
+        ++tagged;
+        EXPECT_EQ(P.wall_normal[a], sph::Vec<2>(P.wall_side[a] > 0 ? 1.0 : -1.0, 0.0));
+      }
+      const double xa = P.position[a][0];
+      for (auto it = list.begin(a); it != list.end(a); ++it) {
+        const double xb = xa - it->x_ab[0];  // a tagged particle on the plane counts as its side
+        const double side_a = P.wall_side[a] != 0 ? P.wall_side[a] : xa - 0.205;
+        const double side_b = P.wall_side[it->b] != 0 ? P.wall_side[it->b] : xb - 0.205;
+        crossing += (side_a >= 0) != (side_b >= 0);
+      }
+    }
+    if (mode == "separating") {
+      EXPECT_EQ(tagged, 2u * 2u * 30u);  // 2 sides x 2 layers x 30 rows
+      EXPECT_EQ(crossing, 0u);
+    } else {
+      EXPECT_EQ(tagged, 0u);
+      EXPECT_GT(crossing, 100u);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace porosph::soil

@@ -9,10 +9,13 @@
    sand under the pool is saturated and rigid enough that its storage is negligible); a ratio
    above 1 is water that reaches the pit by another way.
 2. From water.h5: the free water particles that cross the pile's plane x = 0 from upstream
-   (x > 0) to the pit (x < 0) between two snapshots, by the height they crossed at (above the
-   pile's tip, y > 0.03 m, is through the pile).
+   (x > 0) to the pit (x < 0) between two snapshots, by the height they crossed at: more than
+   dp/2 above the pile's tip (y = 0.03 m) is through the pile, within dp/2 of it at the tip's
+   corner (a particle on the pile's mid-plane at the tip, stepping back and forth), below under
+   it. dp is read from run.json.
 Needs h5py and numpy (/usr/bin/python3).
 """
+import json
 import sys
 
 import h5py
@@ -35,9 +38,27 @@ def balance(run):
                                                                            loss / gap))
 
 
+def run_dp(run):
+    """run.dp of the run (the first "dp" in run.json)."""
+    def find(node):
+        if isinstance(node, dict):
+            if "dp" in node and isinstance(node["dp"], (int, float)):
+                return float(node["dp"])
+            node = list(node.values())
+        if isinstance(node, list):
+            for value in node:
+                found = find(value)
+                if found is not None:
+                    return found
+        return None
+    with open(run + "/run.json") as f:
+        return find(json.load(f))
+
+
 def crossings(run):
     snapshots = h5py.File(run + "/water.h5", "r")["snapshots"]
-    before, through, under = None, 0, 0
+    corner = 0.5 * run_dp(run)
+    before, through, at_tip, under = None, 0, 0, 0
     for key in sorted(snapshots.keys()):
         snap = snapshots[key]
         free = snap["fixed"][:] == 0
@@ -45,13 +66,17 @@ def crossings(run):
         if before is not None:
             for i, x in now.items():
                 if i in before and before[i][0] > 0.0 and x[0] < 0.0:
-                    if 0.5 * (before[i][1] + x[1]) > TIP:
+                    height = 0.5 * (before[i][1] + x[1])
+                    if height > TIP + corner:
                         through += 1
+                    elif height > TIP - corner:
+                        at_tip += 1
                     else:
                         under += 1
         before = now
     print("free water particles crossing x = 0 towards the pit: %d above the pile's tip (through "
-          "the pile), %d under it" % (through, under))
+          "the pile), %d at its corner (within dp/2 of its height), %d under it"
+          % (through, at_tip, under))
 
 
 def main():
