@@ -362,9 +362,14 @@ def main():
               " Since 2026-12-06 the soil sums of the water beside walls are renormalised by "
               "default (`coupling.drag_at_walls`, docs/coupling.md): the fluidized_bed and "
               "darcy_column rows stay the same to the bit or the printed digit. The heave's "
-              "water passes through the one-layer sheet pile at dp 10 mm (nine tenths of the "
-              "upstream pool's loss; docs/validation-studies.md), so its coarse levels are no "
-              "evidence of convergence either way; `coupler check` now warns about such walls.",
+              "water passed through the one-layer sheet pile at dp 10 mm (nine tenths of the "
+              "upstream pool's loss; docs/validation-studies.md); since 2026-12-06 (session 27) "
+              "walls thinner than four layers are filled on both sides and no pair interacts "
+              "across them (`water.thin_walls`, `soil.thin_walls`): at dp 10 / 5 mm no water "
+              "crosses the pile, the overall head converges (0.195 / 0.196 m at 6.2 s against "
+              "0.199 m at dp 2.5 mm), and dp 10 mm fails at 5.70 s, dp 5 mm not by 6 s; the "
+              "gravel's advance (46.7 / 37.5 / 23.4 mm) still does not converge, and the dp 2.5 "
+              "mm row awaits its rerun with the renormalised soil sums.",
               ""]
     grid_cases = [c["name"] for c in CASES if c["name"].startswith(("heave_s", "heave_fr_s"))]
     rockfill_cases = {c["name"] for c in CASES if c["check"] == "rockfill_overtopping"}
