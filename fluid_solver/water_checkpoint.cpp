@@ -36,13 +36,13 @@ void WaterSolver<D>::restore_checkpoint(const io::CheckpointReader& in) {
   book_.read(in);
   const bool two_sided = std::any_of(particles_.wall_side.begin(), particles_.wall_side.end(),
                                      [](std::int32_t tag) { return tag != 0; });
-  if (!occluders_.empty() && !two_sided) {  // written before walls were filled on both sides
+  if (!neighbours_.occluders().empty() &&
+      !two_sided) {  // written before walls were filled on both sides
     std::fprintf(stderr,
                  "fluid_solver: %s: the checkpoint's thin walls are one-sided (written before "
                  "water.thin_walls); they stay shared as in the run so far\n",
                  in.path().c_str());
-    occluders_ = sph::WallOccluders<D>();
-    neighbours_.set_occluders(nullptr);
+    neighbours_.set_occluders({});
   }
 }
 

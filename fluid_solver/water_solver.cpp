@@ -55,8 +55,8 @@ WaterSolver<D>::WaterSolver(const scene::Scene& s)
   InitialParticles<D> initial = initial_particles<D>(s, params_, box_, zones_, open_);
   particles_ = std::move(initial.particles);
   scalars_.next_wall_removal = initial.next_wall_removal;
-  occluders_ = std::move(initial.occluders);
-  neighbours_.set_occluders(&occluders_);
+  // Thin walls filled on both sides (water.thin_walls): the list leaves out the pairs they hide.
+  neighbours_.set_occluders(std::move(initial.occluders));
   next_id_ = static_cast<std::int64_t>(particles_.size());
   if (reservoirs_.count() > 0)  // room for a few refills before the arrays must grow
     particles_.reserve(particles_.position.capacity() + 4 * reservoirs_.column_count());

@@ -136,9 +136,6 @@ class WaterSolver : public sph::ParticleSolverCore<D, WaterParticles<D>> {
   Reservoirs<D> reservoirs_;
   OpenReservoirs<D> open_;       ///< zone codes after the inflow zones'
   MovingWalls<D> moving_walls_;  ///< [[walls]] with moves_with
-  /// Thin walls filled on both sides (water.thin_walls; sph/wall_occluders.h): the neighbour
-  /// list leaves out the pairs they hide.
-  sph::WallOccluders<D> occluders_;
   std::vector<sph::PreparedObservable<D>> observables_;
 
   sph::CellOrder<D> cell_order_{neighbours_, params_.h};  ///< search, re-sort by cell

@@ -131,8 +131,8 @@ SoilSolver<D>::SoilSolver(const scene::Scene& s)
     P.no_slip[i] = q.no_slip ? 1 : 0;
     P.wall_side[i] = q.side;
   }
-  occluders_ = std::move(thin.occluders);
-  neighbours_.set_occluders(&occluders_);
+  // Thin walls filled on both sides (soil.thin_walls): the list leaves out the pairs they hide.
+  neighbours_.set_occluders(std::move(thin.occluders));
   if (s.water) mark_initially_submerged<D>(s.water->blocks, params_, P);
   if (params_.geostatic_initial) apply_geostatic_stress<D>(params_, P);
   loads_.tag(P, params_.dp, params_.materials);

@@ -119,9 +119,6 @@ class SoilSolver : public sph::ParticleSolverCore<D, SoilParticles<D>> {
   SurfaceLoads<D> loads_;        ///< [[soil.loads]]: tractions on tagged particles
   std::vector<sph::PreparedObservable<D>> observables_;
 
-  /// Thin walls filled on both sides (soil.thin_walls; sph/wall_occluders.h): the neighbour list
-  /// leaves out the pairs they hide.
-  sph::WallOccluders<D> occluders_;
   sph::CellOrder<D> cell_order_{neighbours_, params_.h};  ///< search, re-sort by cell
   bool saturation_set_ = false;                   ///< some particle has a non-zero saturation
   SoilImpulseBook<D> book_;                       ///< of the last advance() (checkpointed)

@@ -302,7 +302,7 @@ void NeighbourList<D>::refresh_pairs(const Vec<D>* x, const std::int32_t* wall_t
         const double r2 = dx.squaredNorm();
         if (!(r2 < support2)) continue;
         const std::int32_t tag_b = wall_tag != nullptr ? wall_tag[*c] : 0;
-        if (occluders_->hides(xa, tag_a, xa - dx, tag_b)) continue;
+        if (occluders_.hides(xa, tag_a, xa - dx, tag_b)) continue;
         buffer[used++] = Pair{dx, r2, *c};
       }
     };
@@ -318,7 +318,7 @@ void NeighbourList<D>::refresh_pairs(const Vec<D>* x, const std::int32_t* wall_t
         const std::uint32_t* o = &candidate_offsets_[3 * a];
         const Vec<D> xa = x[a];
         offsets_[3 * a] = static_cast<std::uint32_t>(used);
-        if (occluders_ != nullptr) {
+        if (!occluders_.empty()) {
           keep_visible(a, xa, candidates + o[0], candidates + o[1]);
           offsets_[3 * a + 1] = static_cast<std::uint32_t>(used);
           keep_visible(a, xa, candidates + o[1], candidates + o[2]);

@@ -29,6 +29,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "sph/cell_grid.h"
@@ -62,11 +63,12 @@ class NeighbourList {
   void build(const Vec<D>* x, std::size_t n, std::size_t n_free, double support,
              const DomainBox<D>& box, const std::int32_t* wall_tag = nullptr);
 
-  /// The thin walls whose hidden pairs build() leaves out (null or empty: none). Kept by pointer:
-  /// it must outlive the list.
-  void set_occluders(const WallOccluders<D>* occluders) {
-    occluders_ = occluders != nullptr && !occluders->empty() ? occluders : nullptr;
+  /// The thin walls whose hidden pairs build() leaves out (empty: none; a copy is kept).
+  void set_occluders(WallOccluders<D> occluders) {
+    occluders_ = std::move(occluders);
+    invalidate();
   }
+  const WallOccluders<D>& occluders() const { return occluders_; }
 
   /// Verlet skin [m] (>= 0; 0: a cell search on every build() that sees a moved particle).
   void set_skin(double skin) {
@@ -122,7 +124,7 @@ class NeighbourList {
   double support_ = 0, skin_ = 0;
   DomainBox<D> box_;
   bool searched_ = false;
-  const WallOccluders<D>* occluders_ = nullptr;
+  WallOccluders<D> occluders_;
   std::uint64_t search_count_ = 0;
   std::vector<Vec<D>> searched_position_;  ///< positions at the last cell search
   // grid

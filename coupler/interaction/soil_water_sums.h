@@ -84,7 +84,7 @@ class SoilWaterSums final : public InteractionEngine {
         box_(box),
         occluders_(std::move(occluders)),
         walls_(std::move(p_.soil_wall_points), p_.soil_wall_volume, kernel_, box,
-               sph::kSolverSkinFraction * kernel_.support(), std::move(wall_tags), &occluders_) {
+               sph::kSolverSkinFraction * kernel_.support(), std::move(wall_tags), occluders_) {
     grid_.set_skin(sph::kSolverSkinFraction * kernel_.support());
   }
 
@@ -371,7 +371,7 @@ class SoilWaterSums final : public InteractionEngine {
   Kernel kernel_;
   sph::DomainBox<D> box_;
   CrossNeighbours<D> grid_;
-  sph::WallOccluders<D> occluders_;   ///< thin walls (before walls_, which points to it)
+  sph::WallOccluders<D> occluders_;   ///< thin walls: no pair across them
   WallKernelShare<D, Kernel> walls_;  ///< coupling.drag_at_walls (no points: scale 1)
   std::vector<double> wall_scale_;    ///< per water overlap particle: 1 / (1 - S_wall)
   std::vector<SoilPairData> soil_;

@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 #include "coupler/interaction/cross_neighbours.h"
@@ -45,17 +46,17 @@ class WallKernelShare {
   /// `wall_points`: the fixed wall particles (n x D, flattened), each of volume `volume`; no
   /// points: the share is 0 everywhere (renormalisation off).
   /// `tags`: the points' thin-wall side tags (empty: all 0), `occluders` the thin walls
-  /// (sph/wall_occluders.h; null: none; must outlive this): a wall point that a thin wall hides
-  /// from a water particle is not in its share.
+  /// (sph/wall_occluders.h; empty: none): a wall point that a thin wall hides from a water
+  /// particle is not in its share.
   WallKernelShare(std::vector<double> wall_points, double volume, const Kernel& kernel,
                   const sph::DomainBox<D>& box, double skin, std::vector<std::int32_t> tags = {},
-                  const sph::WallOccluders<D>* occluders = nullptr)
+                  sph::WallOccluders<D> occluders = {})
       : points_(std::move(wall_points)),
         tags_(std::move(tags)),
         volume_(volume),
         kernel_(kernel),
         box_(box),
-        occluders_(occluders != nullptr && !occluders->empty() ? occluders : nullptr) {
+        occluders_(std::move(occluders)) {
     tags_.resize(points_.size() / D, 0);
     ids_.resize(points_.size() / D);
     std::iota(ids_.begin(), ids_.end(), std::int64_t{0});
@@ -83,7 +84,7 @@ class WallKernelShare {
       for (std::size_t c = 0; c < m; ++c) {
         sph::Vec<D> dx = x_a - Eigen::Map<const sph::Vec<D>>(points_.data() + wall[c] * D);
         box_.minimum_image(dx);
-        if (occluders_ != nullptr && occluders_->hides(x_a, 0, x_a - dx, tags_[wall[c]])) continue;
+        if (!occluders_.empty() && occluders_.hides(x_a, 0, x_a - dx, tags_[wall[c]])) continue;
         share += volume_ * kernel_.w(dx.norm());
       }
       scale[a] = 1.0 / (1.0 - std::min(share, kMaxShare));
@@ -97,7 +98,7 @@ class WallKernelShare {
   double volume_;
   Kernel kernel_;
   sph::DomainBox<D> box_;
-  const sph::WallOccluders<D>* occluders_;
+  sph::WallOccluders<D> occluders_;
   CrossNeighbours<D> grid_;
 };
 

@@ -86,7 +86,7 @@ TEST(WallOccluders, TheNeighbourListLeavesOutExactlyTheHiddenPairs) {
   DomainBox<2> domain;
   NeighbourList<2> list;
   list.set_skin(0.1 * support);
-  list.set_occluders(&occ);
+  list.set_occluders(occ);
   list.build(x.data(), x.size(), n_free, support, domain, tag.data());
   std::size_t hidden = 0;
   for (std::size_t a = 0; a < x.size(); ++a) {
