@@ -291,8 +291,9 @@ void NeighbourList<D>::refresh_pairs(const Vec<D>* x, const std::int32_t* wall_t
         used += static_cast<std::size_t>(r2 < support2);
       }
     };
-    // With occluders: the same, less the pairs a thin wall hides (x_b = x_a - x_ab, the pair's
-    // own segment also across a periodic boundary).
+    // With occluders, for a particle near one: the same, less the pairs a thin wall hides (x_b =
+    // x_a - x_ab, the pair's own segment also across a periodic boundary). A particle far from
+    // every occluder has no hidden pair (WallOccluder::near) and keeps the branch-free loop.
     auto keep_visible = [&](std::size_t a, const Vec<D>& xa, const std::int32_t* c0,
                             const std::int32_t* c1) {
       const std::int32_t tag_a = wall_tag != nullptr ? wall_tag[a] : 0;
@@ -318,7 +319,7 @@ void NeighbourList<D>::refresh_pairs(const Vec<D>* x, const std::int32_t* wall_t
         const std::uint32_t* o = &candidate_offsets_[3 * a];
         const Vec<D> xa = x[a];
         offsets_[3 * a] = static_cast<std::uint32_t>(used);
-        if (!occluders_.empty()) {
+        if (!occluders_.empty() && occluders_.near(xa, support_)) {
           keep_visible(a, xa, candidates + o[0], candidates + o[1]);
           offsets_[3 * a + 1] = static_cast<std::uint32_t>(used);
           keep_visible(a, xa, candidates + o[1], candidates + o[2]);

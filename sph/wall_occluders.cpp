@@ -20,6 +20,10 @@ template <int D>
 WallOccluder<D> thin_wall_occluder(const scene::Shape& wall, int axis,
                                    const std::vector<scene::Shape>& walls, double h, double dp) {
   WallOccluder<D> o = occluder_of<D>(wall, axis);
+  o.reach =
+      static_cast<double>(std::max<long>(scene::lattice_count(wall.min[axis], wall.max[axis], dp),
+                                         scene::separating_wall_layers(h, dp) / 2)) *
+      dp;
   Vec<D> centre = 0.5 * (o.lo + o.hi);
   centre[axis] = o.plane;
   for (int k = 0; k < D; ++k) {

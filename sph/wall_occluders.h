@@ -17,6 +17,7 @@
 // coupler's soil-water sums.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -33,6 +34,22 @@ struct WallOccluder {
   int axis = 0;
   double plane = 0.0;
   Vec<D> lo = Vec<D>::Zero(), hi = Vec<D>::Zero();
+  /// How far from the plane its tagged wall particles lie at most (max(L, m) dp): a particle
+  /// farther than the support from the box [plane - reach, plane + reach] x [lo, hi] has no pair
+  /// this occluder hides (its segments cannot reach the patch, nor its tagged particles).
+  double reach = 0.0;
+
+  /// True if x lies within `support` of that box.
+  bool near(const Vec<D>& x, double support) const {
+    double d2 = 0.0;
+    for (int k = 0; k < D; ++k) {
+      const double low = k == axis ? plane - reach : lo[k];
+      const double high = k == axis ? plane + reach : hi[k];
+      const double d = std::max({0.0, low - x[k], x[k] - high});
+      d2 += d * d;
+    }
+    return d2 < support * support;
+  }
 
   /// +1 on the side x[axis] >= plane, -1 on the other.
   int side(const Vec<D>& x) const { return x[axis] >= plane ? 1 : -1; }
@@ -66,6 +83,13 @@ class WallOccluders {
   int add(const WallOccluder<D>& occluder) {
     walls_.push_back(occluder);
     return static_cast<int>(walls_.size()) - 1;
+  }
+
+  /// True if x is near() some occluder: only such a particle can have a hidden pair.
+  bool near(const Vec<D>& x, double support) const {
+    for (const WallOccluder<D>& o : walls_)
+      if (o.near(x, support)) return true;
+    return false;
   }
 
   /// True if particles a and b (tags as wall_side_tag; xb = xa - x_ab with the minimum image, so

@@ -71,8 +71,8 @@ TEST(WallOccluders, TheNeighbourListLeavesOutExactlyTheHiddenPairs) {
   // wall's two-sided particles: the lists equal a brute-force search less the hidden pairs.
   const double dp = 0.01, h = 0.012, support = 2 * h;
   const scene::Shape wall = box({-0.005, 0.03}, {0.005, 0.2});
-  WallOccluders<2> occ;
-  occ.add(occluder_of<2>(wall, 0));
+  WallOccluders<2> occ;  // with its reach, so that the list's near() filter is exercised
+  occ.add(thin_wall_occluder<2>(wall, 0, {wall}, h, dp));
   std::vector<V> x;
   for (int i = -8; i <= 8; ++i)
     for (int j = 0; j < 20; ++j) {
@@ -103,6 +103,9 @@ TEST(WallOccluders, TheNeighbourListLeavesOutExactlyTheHiddenPairs) {
     EXPECT_EQ(got, expected) << "particle " << a;
   }
   EXPECT_GT(hidden, 500u);  // the test sees pairs across the wall
+  // The filter is needed: far from the wall a free particle is not near(), next to it it is.
+  EXPECT_FALSE(occ.near(V(-0.06, 0.1), support));
+  EXPECT_TRUE(occ.near(V(-0.03, 0.1), support));  // within 2h of the +1 side's layer at -0.01
 }
 
 }  // namespace
