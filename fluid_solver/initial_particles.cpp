@@ -63,14 +63,7 @@ InitialParticles<D> initial_particles(const scene::Scene& s, const WaterParams<D
       sph::thin_walls_of<D>(s, water_walls, "water", params.two_sided_thin_walls);
   for (std::size_t j = 0; j < water_walls.size(); ++j) {
     const scene::Shape& wall = water_walls[j];
-    wall_points.clear(), point_side.clear();
-    if (thin.occluder_of_wall[j] >= 0) {
-      sph::two_sided_wall_fill<D>(wall, thin.axis_of_wall[j], thin.occluder_of_wall[j], params.h,
-                                  dp, wall_points, point_side);
-    } else {
-      wall_points = sph::fill_shape<D>(wall, dp);
-      point_side.assign(wall_points.size(), 0);
-    }
+    thin.fill(j, wall, params.h, dp, wall_points, point_side);
     for (std::size_t i = 0; i < wall_points.size(); ++i) {
       const Vec& x = wall_points[i];
       Vec wrapped = x;  // along periodic axes the domain itself closes the flow: no wall beyond it

@@ -2,7 +2,6 @@
 // state that survives a step. Scratch buffers and the neighbour list are rebuilt by the next
 // compute_rates().
 #include <algorithm>
-#include <cstdio>
 #include <stdexcept>
 
 #include "fluid_solver/water_solver.h"
@@ -34,16 +33,6 @@ void WaterSolver<D>::restore_checkpoint(const io::CheckpointReader& in) {
   damping_.set_released(in.get_i64("damping_released") != 0);
   physics_seconds_ = in.get_f64("physics_seconds");
   book_.read(in);
-  const bool two_sided = std::any_of(particles_.wall_side.begin(), particles_.wall_side.end(),
-                                     [](std::int32_t tag) { return tag != 0; });
-  if (!neighbours_.occluders().empty() &&
-      !two_sided) {  // written before walls were filled on both sides
-    std::fprintf(stderr,
-                 "fluid_solver: %s: the checkpoint's thin walls are one-sided (written before "
-                 "water.thin_walls); they stay shared as in the run so far\n",
-                 in.path().c_str());
-    neighbours_.set_occluders({});
-  }
 }
 
 template void WaterSolver<2>::write_checkpoint(io::CheckpointWriter&);

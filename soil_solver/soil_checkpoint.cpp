@@ -1,8 +1,6 @@
 // SoilSolver's checkpoint (docs/checkpoints.md): the particle arrays (stress, porosity, plastic
 // strain, displacement, saturation, wet flags, ...) and every scalar of the state that survives a
 // step. Scratch buffers and the neighbour list are rebuilt by the next compute_rates().
-#include <algorithm>
-#include <cstdio>
 #include <stdexcept>
 
 #include "soil_solver/soil_solver.h"
@@ -23,16 +21,6 @@ void SoilSolver<D>::restore_checkpoint(const io::CheckpointReader& in) {
   damping_.set_released(in.get_i64("damping_released") != 0);
   saturation_set_ = in.get_i64("saturation_set") != 0;
   book_.read(in);
-  const bool two_sided = std::any_of(particles_.wall_side.begin(), particles_.wall_side.end(),
-                                     [](std::int32_t tag) { return tag != 0; });
-  if (!neighbours_.occluders().empty() &&
-      !two_sided) {  // written before walls were filled on both sides
-    std::fprintf(stderr,
-                 "soil_solver: %s: the checkpoint's thin walls are one-sided (written before "
-                 "soil.thin_walls); they stay shared as in the run so far\n",
-                 in.path().c_str());
-    neighbours_.set_occluders({});
-  }
 }
 
 template void SoilSolver<2>::write_checkpoint(io::CheckpointWriter&);

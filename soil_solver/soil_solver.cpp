@@ -76,15 +76,8 @@ SoilSolver<D>::SoilSolver(const scene::Scene& s)
     const scene::Shape& wall = walls[j];
     const bool no_slip =
         wall.condition == "default" ? params_.no_slip : wall.condition == "no_slip";
-    points.clear(), sides.clear();
+    thin.fill(j, wall, params_.h, dp, points, sides);
     const int axis = thin.axis_of_wall[j];
-    if (axis >= 0) {
-      sph::two_sided_wall_fill<D>(wall, axis, thin.occluder_of_wall[j], params_.h, dp, points,
-                                  sides);
-    } else {
-      points = sph::fill_shape<D>(wall, dp);
-      sides.assign(points.size(), 0);
-    }
     for (std::size_t i = 0; i < points.size(); ++i) {
       const Vec& x = points[i];
       Vec wrapped = x;

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -108,12 +109,23 @@ class ParticleSolverCore {
   /// The core's part of restore_checkpoint(): the step scalars first (they throw for another
   /// dimension before anything else changes), then the particle arrays; the neighbour list is
   /// rebuilt by the next compute_rates(), and no interaction is pending (a checkpoint is taken
-  /// after advance()).
+  /// after advance()). A checkpoint written before thin walls were filled on both sides has no
+  /// tagged wall particle (its wall_side zero-filled, checkpoint_arrays.h): the run keeps its thin
+  /// walls shared, as it ran so far, and says so.
   void read_core_checkpoint(const io::CheckpointReader& in) {
     neighbours_.invalidate();
     scalars_.read(in, D);
     read_particle_arrays(in, particles_);
     interaction_fresh_ = false;
+    const auto& tags = particles_.wall_side;
+    if (!neighbours_.occluders().empty() &&
+        std::none_of(tags.begin(), tags.end(), [](std::int32_t tag) { return tag != 0; })) {
+      std::fprintf(stderr,
+                   "%s: the checkpoint's thin walls are one-sided (written before "
+                   "water.thin_walls / soil.thin_walls); they stay shared as in the run so far\n",
+                   in.path().c_str());
+      neighbours_.set_occluders({});
+    }
   }
 
   Particles particles_;

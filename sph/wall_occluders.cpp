@@ -85,6 +85,18 @@ void two_sided_wall_fill(const scene::Shape& wall, int axis, int k, double h, do
   }
 }
 
+template <int D>
+void ThinWallSet<D>::fill(std::size_t j, const scene::Shape& wall, double h, double dp,
+                          std::vector<Vec<D>>& points, std::vector<std::int32_t>& tags) const {
+  points.clear(), tags.clear();
+  if (occluder_of_wall[j] >= 0) {
+    two_sided_wall_fill<D>(wall, axis_of_wall[j], occluder_of_wall[j], h, dp, points, tags);
+  } else {
+    points = fill_shape<D>(wall, dp);
+    tags.assign(points.size(), 0);
+  }
+}
+
 #define POROSPH_INSTANTIATE(D)                                                                    \
   template WallOccluder<D> occluder_of<D>(const scene::Shape&, int);                              \
   template WallOccluder<D> thin_wall_occluder<D>(                                                 \
@@ -95,6 +107,8 @@ void two_sided_wall_fill(const scene::Shape& wall, int axis, int k, double h, do
                                        std::vector<Vec<D>>&, std::vector<std::int32_t>&);
 POROSPH_INSTANTIATE(2)
 POROSPH_INSTANTIATE(3)
+template struct ThinWallSet<2>;
+template struct ThinWallSet<3>;
 #undef POROSPH_INSTANTIATE
 
 }  // namespace porosph::sph

@@ -135,6 +135,11 @@ template <int D>
 struct ThinWallSet {
   WallOccluders<D> occluders;
   std::vector<int> occluder_of_wall, axis_of_wall;
+
+  /// The particles of wall j (`wall`, h, dp as the set's): two_sided_wall_fill() for a thin one,
+  /// else fill_shape() with tags 0. Replaces the contents of points and tags.
+  void fill(std::size_t j, const scene::Shape& wall, double h, double dp,
+            std::vector<Vec<D>>& points, std::vector<std::int32_t>& tags) const;
 };
 template <int D>
 ThinWallSet<D> thin_walls_of(const scene::Scene& scene, const std::vector<scene::Shape>& walls,

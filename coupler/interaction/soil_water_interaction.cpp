@@ -67,14 +67,7 @@ std::vector<double> wall_points_without_soil(const scene::Scene& s, const sph::T
     if (!wall.moves_with.empty()) continue;
     const bool cuts_soil = wall.phases.empty() || std::find(wall.phases.begin(), wall.phases.end(),
                                                             "soil") != wall.phases.end();
-    fill.clear(), side.clear();
-    if (thin.occluder_of_wall[j] >= 0) {
-      sph::two_sided_wall_fill<D>(wall, thin.axis_of_wall[j], thin.occluder_of_wall[j], s.h(),
-                                  s.run.dp, fill, side);
-    } else {
-      fill = sph::fill_shape<D>(wall, s.run.dp);
-      side.assign(fill.size(), 0);
-    }
+    thin.fill(j, wall, s.h(), s.run.dp, fill, side);
     for (std::size_t i = 0; i < fill.size(); ++i) {
       const sph::Vec<D>& x = fill[i];
       bool soil_there = false;
