@@ -11,12 +11,15 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <utility>
 
 #include "coupler/checkpoint.h"
 #include "coupler/coupled_step.h"
 #include "coupler/coupled_step_clock.h"
 #include "coupler/progress_line.h"
+#include "coupler/resume_point.h"
 #include "coupler/run_directory.h"
+#include "coupler/run_errors.h"
 #include "coupler/run_record.h"
 #include "coupler/scene_check.h"
 #include "coupler/solver_hub.h"
@@ -36,16 +39,6 @@ namespace fs = std::filesystem;
 /// The step loop takes (and clears) it, so that a second signal is seen as such.
 std::atomic<int> interrupt_signal{0};
 extern "C" void on_interrupt(int signal) { interrupt_signal.store(signal); }
-
-/// A failure of the run (not of the input): status "failed", exit code 1.
-struct RunFailure : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-/// A failure caused by what the user gave us: exit code 2.
-struct BadInput : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 class RunSession {
  public:
@@ -117,61 +110,15 @@ void RunSession::load_fresh_run() {
 }
 
 void RunSession::load_resume_point() {
-  std::error_code error;
-  if (!fs::is_directory(options_.resume_dir, error)) {
-    throw BadInput("cannot resume: '" + options_.resume_dir + "' is not a run directory");
-  }
-  out_dir_ = fs::absolute(options_.resume_dir).lexically_normal().string();
-  try {
-    lock_ = std::make_unique<RunDirectoryLock>(out_dir_);
-  } catch (const RunDirectoryError& e) {
-    throw BadInput(std::string("cannot resume: ") + e.what());
-  }
-  LoopState loop;
-  std::optional<CheckpointManifest> manifest;
-  std::vector<std::string> newer_keys;
-  try {
-    manifest = load_latest_checkpoint(out_dir_, record_, loop);
-  } catch (const std::exception& e) {
-    throw BadInput(std::string("cannot resume: ") + e.what());
-  }
-  if (!manifest) {
-    throw BadInput("cannot resume: " + out_dir_ + " has no checkpoint (no " +
-                   coupling::checkpoint_dir(out_dir_) +
-                   "/latest.json; checkpoints come from run.checkpoint_interval, "
-                   "run.checkpoint_wall_minutes or a SIGINT/SIGTERM past t = 0)");
-  }
-  try {
-    check_checkpoint_scene(out_dir_, *manifest, scene_hash(record_.resolved_toml));
-    scene_ = scene::load_scene_text(record_.resolved_toml, manifest->coupler_file);
-    // The run keeps its own text: this binary may resolve it with keys added since the run began
-    // (their defaults, said below), and its checkpoints must name the run's hash, not a new one.
-    newer_keys = newer_key_notices(record_.resolved_toml, scene_.resolved_toml);
-    scene_.resolved_toml = record_.resolved_toml;
-  } catch (const scene::SceneError& e) {
-    throw BadInput(std::string("cannot resume: bad scene in the checkpoint: ") + e.what());
-  } catch (const std::runtime_error& e) {
-    throw BadInput(std::string("cannot resume: ") + e.what());
-  }
-  for (const std::string& phase : scene_.phases()) {
-    if (!manifest->solvers.count(phase)) {
-      throw BadInput("cannot resume: the checkpoint has no " + phase + " solver state");
-    }
-  }
-  try {
-    rename_former_snapshot_files(out_dir_);
-  } catch (const RunDirectoryError& e) {
-    throw BadInput(std::string("cannot resume: ") + e.what());
-  }
-  record_.status = "running";
-  record_.message.clear();
-  record_.resumes += 1;
-  record_.start_segment();  // the wall time goes on from the checkpoint's
-  resumed_ = loop;
+  ResumePoint point = coupler::load_resume_point(options_.resume_dir, record_);
+  lock_ = std::move(point.lock);
+  out_dir_ = point.out_dir;
+  scene_ = std::move(point.scene);
+  resumed_ = point.loop;
   std::fprintf(stderr, "coupler: resuming %s from checkpoint %u at t = %.9g s (step %llu)\n",
-               out_dir_.c_str(), manifest->index, manifest->time,
-               static_cast<unsigned long long>(manifest->step));
-  for (const std::string& notice : newer_keys)
+               out_dir_.c_str(), point.checkpoint_index, point.time,
+               static_cast<unsigned long long>(point.step));
+  for (const std::string& notice : point.newer_key_notices)
     std::fprintf(stderr, "coupler: %s\n", notice.c_str());
 }
 
