@@ -34,7 +34,8 @@ void expect_rigid_soil_phase(const CaseRun& run) {
 // the last of the transient at t = 0.05 s (~50 relaxation times K / g), both far below it, while
 // a skeleton whose volume m / rho were 5 % off (measured: 5.4 % error) or that moved would fail.
 TEST(RigidSoilRun, DarcyColumnFollowsDarcysLaw) {
-  const auto run = run_case("darcy_column", {"soil.solver=" + bin("rigid_soil_solver")});
+  const auto run =
+      run_case("darcy_column", {"soil.solver=" + bin("rigid_soil_solver"), "run.end_time=0.05"});
   expect_rigid_soil_phase(run);
   const auto c = validation::check_darcy_column(run.out);
   EXPECT_EQ(c.seepage, "darcy_kozeny_carman");
@@ -138,8 +139,8 @@ TEST(RigidSoilRun, TheCommandLineWinsOverTheScenesKey) {
 // ends exactly where the run ended - the ledger, the time series and the impulse each particle
 // booked.
 TEST(RigidSoilRun, ResumesFromItsCheckpointToTheSameEnd) {
-  const auto run = run_case(
-      "darcy_column", {"soil.solver=" + bin("rigid_soil_solver"), "run.checkpoint_interval=0.01"});
+  const auto run = run_case("darcy_column", {"soil.solver=" + bin("rigid_soil_solver"),
+                                             "run.checkpoint_interval=0.01", "run.end_time=0.05"});
   expect_rigid_soil_phase(run);
   ASSERT_TRUE(std::filesystem::exists(run.out + "/checkpoint/latest.json"));
   const std::string resumed = fresh_dir("rigid-resume") + "/out";
