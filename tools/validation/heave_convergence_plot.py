@@ -7,7 +7,12 @@ reaches the pile tip (the failure) and the experiment's failure time.
   tools/validation/heave_convergence_plot.py OUT.png RUN1 RUN2 ...
 
 Each RUN holds run.json and the validate_series.csv written above (docs/validation-studies.md).
+It also prints the advance of each run every 0.5 s (up to the shortest run's end) and, for three
+runs whose dp halves, the self-convergence order p = log2((a1 - a2) / (a2 - a3)) at each time
+(a1 coarsest): where p > 0 the advance converges there, where it is not a number (increments of
+opposite signs) or negative it does not.
 """
+import math
 import json
 import os
 import sys
@@ -25,11 +30,13 @@ def main(argv):
         sys.exit(__doc__)
     out, runs = argv[1], argv[2:]
     fig, ax = plt.subplots(figsize=(6.5, 4))
+    curves = []
     for run in runs:
         with open(os.path.join(run, "run.json")) as f:
             parameters = json.load(f)["parameters"]
         s = read_csv(os.path.join(run, "validate_series.csv"))
         advance = s["gravel_bottom"][0] - s["gravel_bottom"]
+        curves.append((parameters["run"]["dp"], list(s["t"]), list(advance)))
         line, = ax.plot(s["t"], 1000 * advance, label=f"dp {1000 * parameters['run']['dp']:g} mm")
         tip = [w["min"][1] for w in parameters["walls"] if w.get("label") == "sheet_pile"]
         if tip:  # the failure: this run's gravel bottom at the pile tip (its lattice's start)
@@ -42,6 +49,35 @@ def main(argv):
     fig.tight_layout()
     fig.savefig(out, dpi=110)
     print(out)
+    print_orders(sorted(curves, key=lambda c: -c[0]))
+
+
+def at(t, ts, values):
+    """values(t) by linear interpolation; nan outside ts."""
+    for k in range(1, len(ts)):
+        if ts[k - 1] <= t <= ts[k]:
+            w = (t - ts[k - 1]) / (ts[k] - ts[k - 1]) if ts[k] > ts[k - 1] else 0.0
+            return values[k - 1] + w * (values[k] - values[k - 1])
+    return math.nan
+
+
+def print_orders(curves):
+    """The advance per run (coarse to fine) every 0.5 s, and the self-convergence order."""
+    end = min(c[1][-1] for c in curves)
+    halving = len(curves) == 3 and all(
+        abs(curves[k][0] / curves[k + 1][0] - 2) < 1e-6 for k in range(2))
+    print("t [s]  " + "  ".join(f"dp {1000 * c[0]:g} mm" for c in curves)
+          + ("  order p" if halving else ""))
+    t = 0.5
+    while t <= end + 1e-9:
+        a = [1000 * at(t, c[1], c[2]) for c in curves]
+        line = f"{t:5.1f}  " + "  ".join(f"{x:8.1f}" for x in a)
+        if halving:
+            d1, d2 = a[0] - a[1], a[1] - a[2]
+            p = math.log2(d1 / d2) if d1 * d2 > 0 else math.nan
+            line += f"  {p:7.2f}"
+        print(line)
+        t += 0.5
 
 
 if __name__ == "__main__":

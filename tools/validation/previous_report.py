@@ -30,6 +30,8 @@ def previous_report(path):
             multi_case["heave"] = block.rstrip("\n") + "\n"
         elif title.startswith("## Rockfill: B against"):
             multi_case["rockfill"] = block.rstrip("\n") + "\n"
+        elif title.startswith("## Convergence of each verdict"):
+            multi_case["convergence"] = block.rstrip("\n") + "\n"
         else:
             sections[title[3:].split(":")[0]] = block.rstrip("\n") + "\n"
     return rows, sections, multi_case

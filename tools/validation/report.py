@@ -23,6 +23,7 @@ import sys
 import tempfile
 
 import case_plots
+import convergence_section
 from previous_report import WIDTH_COLUMNS, previous_report, previous_width_rows
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -287,6 +288,9 @@ def main():
         for c in cases:
             if not os.path.exists(os.path.join(run_path(c, args), "run.json")):
                 run_case(c, args)
+        for s in convergence_section.STUDIES if not args.only else []:
+            if not os.path.exists(convergence_section.csv_path(args.runs, s)):
+                convergence_section.run_study(s, args.runs, args.bin)
     os.environ["HDF5_USE_FILE_LOCKING"] = "FALSE"  # also for the plots (h5py)
     scratch = tempfile.mkdtemp(prefix="porosph-report-")
 
@@ -296,6 +300,7 @@ def main():
     sections = []
     rockfill_b = {}
     kept_rows, kept_sections, kept_multi = previous_report(args.out) if args.only else ({}, {}, {})
+    grows = convergence_section.grown(args.runs)
     for c in CASES:
         if args.only and c["name"] not in args.only:
             table += kept_rows.get(c["name"], [f"| {c['name']} | not run | | | | | | | | |"])
@@ -321,6 +326,8 @@ def main():
         if c["check"] == "rockfill_overtopping" and summaries:
             rockfill_b[c["name"]] = float(summaries[0][1].split()[0])
         for cells in summaries:
+            if (c["name"], cells[0]) in grows:  # met or not here, the series fails
+                cells = cells[:5] + [cells[5] + "; **error grows with dp** (see convergence)"]
             quantity, value, reference, error, target, verdict = (x.replace("|", "\\|")
                                                                   for x in cells)
             table.append(f"| {c['name']} | {state}{quantity} | {value} | {reference} | {error} | "
@@ -342,15 +349,17 @@ def main():
               "Every figure below comes from the run and the command printed with it; "
               "`tools/validation/report.py --run` reruns what is missing and rewrites this file "
               "(long runs, not in CI). Resolution studies, variants and the discussion of each "
-              "result: docs/validation-studies.md.", "",
+              "result: docs/validation-studies.md. The table gives each case at one resolution; its "
+              "convergence (three resolutions, the observed order, the verdict over them) is the "
+              "section after it.", "",
               "Machine: 2-core shared VM, Debian 12, g++ 12 Release build (docs/performance.md). "
               "The wall times are those of the runs below, most of them made while 3-5 runs "
               "shared the two cores: they rank the cases, they are not throughput figures "
               "(those are in docs/performance.md).", "",
               "Model version: the rows of dam_break, hydrostatic_tank, soil_column, "
-              "granular_collapse and darcy_column were rerun on 2026-12-04 with "
-              "the lattice-normalised kernel gradient and the exact hydrostatic density diffusion "
-              "(docs/verification.md, \"Still water\"); fluidized_bed with the whole current "
+              "granular_collapse, darcy_column and darcy_column_forchheimer were rerun on "
+              "2026-12-06 (session 28) with the whole current model, as were their resolution "
+              "series (the section after the table); fluidized_bed with the whole current "
               "model (also the diffusion's linear correction and the start from p(d)), rerun "
               "2026-12-05 with the Shepard density filter off (its section); hydraulic_heave at "
               "the paper's spacing dp 2.5 mm with the whole current model (2026-12-05): no "
@@ -363,11 +372,10 @@ def main():
               "last printed digit or one unit of it, and moved the heave's dp 5 mm failure from "
               "4.85 to 5.05 s (docs/validation-studies.md); the other rows were not rerun. The "
               "rockfill and heave-variant rows predate those changes (and the rockfill rows the "
-              "pairwise implicit drag) until they are rerun. The darcy_column and Forchheimer "
-              "rows were rerun on 2026-12-06 with the whole current model: their velocity "
-              "swings as the water lattice slides through the soil's, and is now judged by its "
-              "mean over one lattice period, which equals the prediction from the kernel's "
-              "lattice sum to 3e-7 / 1e-6 and is the same at every dp (docs/accuracy.md)."
+              "pairwise implicit drag) until they are rerun. The darcy_column velocity swings as "
+              "the water lattice slides through the soil's, and is judged by its mean over one "
+              "lattice period, which equals the prediction from the kernel's lattice sum to 3e-7 "
+              "(Forchheimer: 1e-6) and is the same at every dp (docs/accuracy.md)."
               " Since 2026-12-06 the soil sums of the water beside walls are renormalised by "
               "default (`coupling.drag_at_walls`, docs/coupling.md): the fluidized_bed and "
               "darcy_column rows stay the same to the bit or the printed digit. The heave's "
@@ -389,6 +397,8 @@ def main():
     # The rockfill cases measured now, and the earlier report's rows for the others.
     grid += "\n" + (kept_multi.get("rockfill", "") if keep else
                     rockfill_width_section(args, rockfill_b, kept_multi.get("rockfill", "")))
+    # Every verdict's resolution series (convergence_section.py runs them; rows kept when gone).
+    grid = convergence_section.section(args.runs, kept_multi.get("convergence", "")) + "\n" + grid
     with open(args.out, "w") as f:
         f.write("\n".join(header + table) + "\n\n" + grid + "\n"
                 + "\n".join(sections))
