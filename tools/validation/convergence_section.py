@@ -63,7 +63,8 @@ ELSEWHERE = [
      "with refinement, the bulk front converges)"),
     ("fluidized_bed", "steady porosity, onset, velocity / (Q/A)",
      "docs/validation-studies.md, 'fluidized_bed'"),
-    ("rockfill_*", "B", "docs/validation-studies.md, 'Rockfill' (dp 0.02 m; dp 0.01 m not finished)"),
+    ("rockfill_*", "B",
+     "docs/validation-studies.md, 'Rockfill' (dp 0.02 m; dp 0.01 m not finished)"),
     ("hydraulic_heave", "time of complete failure, head, gravel advance",
      "docs/validation-studies.md, 'Hydraulic heave at three resolutions' (does not converge)"),
 ]
@@ -106,7 +107,8 @@ def shell_line(s):
     quantity = f" --quantity '{s['quantity']}'" if s["quantity"] else ""
     value = " --error-from value" if s["error_from"] == "value" else ""
     return (f"tools/study/porosph_study.py {s['scene']} --check {s['check']} --converge "
-            f"run.dp={levels}{quantity}{value}{extra} --out runs/validation/convergence/{s['case']}")
+            f"run.dp={levels}{quantity}{value}{extra} "
+            f"--out runs/validation/convergence/{s['case']}")
 
 
 def number(text, fmt):

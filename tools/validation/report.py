@@ -349,8 +349,8 @@ def main():
               "Every figure below comes from the run and the command printed with it; "
               "`tools/validation/report.py --run` reruns what is missing and rewrites this file "
               "(long runs, not in CI). Resolution studies, variants and the discussion of each "
-              "result: docs/validation-studies.md. The table gives each case at one resolution; its "
-              "convergence (three resolutions, the observed order, the verdict over them) is the "
+              "result: docs/validation-studies.md. The table gives each case at one resolution; "
+              "its convergence (three resolutions, the observed order, the verdict over them) is the "
               "section after it.", "",
               "Machine: 2-core shared VM, Debian 12, g++ 12 Release build (docs/performance.md). "
               "The wall times are those of the runs below, most of them made while 3-5 runs "
