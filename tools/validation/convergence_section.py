@@ -25,10 +25,12 @@ TITLE = "## Convergence of each verdict"
 A = 0.05715  # the dam break's column width a [m]
 
 
-def study(name, case, scene, check, levels, quantity=None, error_from="column", sets=()):
+def study(name, case, scene, check, levels, quantity=None, error_from="column", sets=(),
+          check_args=()):
     """levels: run.dp values, coarse to fine; quantity: the summary line (default the first)."""
     return dict(name=name, case=case, scene=scene, check=check, levels=list(levels),
-                quantity=quantity, error_from=error_from, sets=list(sets))
+                quantity=quantity, error_from=error_from, sets=list(sets),
+                check_args=list(check_args))
 
 
 STUDIES = [
@@ -56,13 +58,23 @@ STUDIES = [
           sets=["run.end_time=0.16"]),
 ]
 
+# The fluidised bed's quick variant (report.py's case: E softened 25x, the ramp 1 s, 4 s).
+BED_QUICK = ["run.end_time=4.0", "water.inflow[0].ramp_time=1.0"] + [
+    f"soil.materials[{m}].young_modulus=2.0e5" for m in range(3)]
+STUDIES += [
+    study("fluidized_bed_porosity", "fluidized_bed", "cases/fluidized_bed/scene.toml",
+          "fluidized_bed", [0.004, 0.002, 0.001], error_from="value", sets=BED_QUICK,
+          check_args=["--window", "0.5"]),
+    study("fluidized_bed_velocity", "fluidized_bed", "cases/fluidized_bed/scene.toml",
+          "fluidized_bed", [0.004, 0.002, 0.001], quantity="velocity in the bed",
+          sets=BED_QUICK, check_args=["--window", "0.5"]),
+]
+
 # Measured elsewhere: (case, quantity, where its series and verdict are).
 ELSEWHERE = [
     ("granular_collapse", "run-out, bulk front (no reference value to take an error from)",
      "docs/validation-studies.md, 'granular_collapse: three levels' (the furthest particle grows "
      "with refinement, the bulk front converges)"),
-    ("fluidized_bed", "steady porosity, onset, velocity / (Q/A)",
-     "docs/validation-studies.md, 'fluidized_bed'"),
     ("rockfill_*", "B",
      "docs/validation-studies.md, 'Rockfill' (dp 0.02 m; dp 0.01 m not finished)"),
     ("hydraulic_heave", "time of complete failure, head, gravel advance",
@@ -87,6 +99,7 @@ def command(s, runs, binary):
         cmd += ["--quantity", s["quantity"]]
     for key in s["sets"]:
         cmd += ["--set", key]
+    cmd += [f"--check-arg={a}" for a in s["check_args"]]
     return cmd
 
 
@@ -103,7 +116,8 @@ def run_study(s, runs, binary):
 
 def shell_line(s):
     levels = ",".join(f"{v:.10g}" for v in s["levels"])
-    extra = "".join(f" --set {k}" for k in s["sets"])
+    extra = "".join(f" --set '{k}'" for k in s["sets"])
+    extra += "".join(f" --check-arg={a}" for a in s["check_args"])
     quantity = f" --quantity '{s['quantity']}'" if s["quantity"] else ""
     value = " --error-from value" if s["error_from"] == "value" else ""
     return (f"tools/study/porosph_study.py {s['scene']} --check {s['check']} --converge "
