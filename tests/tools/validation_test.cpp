@@ -3,9 +3,11 @@
 
 #include <cmath>
 
+#include "sph/kernels.h"
 #include "tests/support/process_support.h"
 #include "tools/validation/case_checks.h"
 #include "tools/validation/dam_case_checks.h"
+#include "tools/validation/lattice_registry.h"
 #include "tools/validation/run_directory.h"
 #include "tools/validation/soil_checks.h"
 
@@ -135,6 +137,24 @@ TEST(Validation, MissingRunDirectoryIsAClearError) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/run/run.json"), std::string::npos);
   }
+}
+
+// The cubic spline's lattice sum S(o) on a square lattice at h = 1.2 dp, along one axis: the
+// values computed independently (numpy, the kernel written out) are 0.999757 at o = 0, 0.998595
+// at o = dp/2 and 0.998493 at o = 0.325 dp (the smallest), and the mean of 1 / S over a
+// spacing 1.0011229 (64 midpoints): what the darcy column's period mean is measured against
+// (docs/accuracy.md). Bounds 1e-6: a wrong volume, h or reach changes them by 1e-4 or more.
+TEST(LatticeRegistry, CubicSplineSumsAtTheScenesRatio) {
+  const double dp = 0.0025;
+  const sph::CubicSpline<2> kernel(1.2 * dp);
+  EXPECT_NEAR(validation::lattice_kernel_sum(kernel, dp, 1, 0.0), 0.999757, 1e-6);
+  EXPECT_NEAR(validation::lattice_kernel_sum(kernel, dp, 1, 0.5 * dp), 0.998595, 1e-6);
+  EXPECT_NEAR(validation::lattice_kernel_sum(kernel, dp, 1, 0.325 * dp), 0.998493, 1e-6);
+  EXPECT_NEAR(validation::lattice_kernel_sum(kernel, dp, 0, 0.5 * dp),
+              validation::lattice_kernel_sum(kernel, dp, 1, 0.5 * dp), 1e-12);  // square lattice
+  const double factor =
+      validation::registry_mean_velocity(kernel, dp, 1, [](double s) { return 1.0 / s; });
+  EXPECT_NEAR(factor, 1.0011229, 1e-6);
 }
 
 }  // namespace

@@ -5,12 +5,12 @@
 // (coupler/interaction/soil_water_sums.h): for a uniform bed it is the continuum drag times the
 // kernel's lattice sum S(o) = sum_j dp^D W(|o - x_j|), o the particle's offset from a soil
 // lattice site. S integrates to 1 over all offsets of a cell, but it is not 1 at each: for the
-// cubic spline at h = 1.2 dp, 0.99976 at o = 0 and 0.99849 at o = (0, dp/2). Gravity moves the
-// water along one lattice axis only, so its particles keep o = 0 across the flow and sweep o along
-// it: the steady velocity K / S(o) swings with the period dp / K, and its mean over that period
-// is K times the mean of 1 / S along the axis (1.00112 here), whatever dp is - the error of the
-// kernel's partition of unity, which depends on h / dp, not on dp. (With Forchheimer's quadratic
-// term the velocity moves less with S: S (a q + b q^2) = 1.)
+// cubic spline at h = 1.2 dp, from 0.99976 at o = 0 down to 0.99849 at o = (0, 0.325 dp). Gravity
+// moves the water along one lattice axis only, so its particles keep o = 0 across the flow and
+// sweep o along it: the steady velocity K / S(o) swings with the period dp / K, and its mean over
+// that period is K times the mean of 1 / S along the axis (1.00112 here), whatever dp is - the
+// error of the kernel's partition of unity, which depends on h / dp, not on dp. (With Forchheimer's
+// quadratic term the velocity moves less with S: S (a q + b q^2) = 1.)
 #pragma once
 
 #include <cmath>
