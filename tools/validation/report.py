@@ -384,9 +384,10 @@ def main():
               "walls thinner than four layers are filled on both sides and no pair interacts "
               "across them (`water.thin_walls`, `soil.thin_walls`): at dp 10 / 5 mm no water "
               "crosses the pile, the overall head converges (0.195 / 0.196 m at 6.2 s against "
-              "0.199 m at dp 2.5 mm), and dp 10 mm fails at 5.70 s, dp 5 mm not by 6 s; the "
-              "gravel's advance (46.7 / 37.5 / 23.4 mm) still does not converge, and the dp 2.5 "
-              "mm row awaits its rerun with the renormalised soil sums.",
+              "0.198 m at dp 2.5 mm), and dp 10 mm fails at 5.70 s, dp 5 mm not by 6 s; the "
+              "gravel's advance still does not converge: 46.7 / 37.5 / 25.4 mm by 5.8 s with "
+              "dp 2.5 mm rerun on the current model (2026-12-06, session 28: no failure, head "
+              "0.198 m at 6.2 s; it agrees with the coarser levels to ~2.5 s, then stops).",
               ""]
     grid_cases = [c["name"] for c in CASES if c["name"].startswith(("heave_s", "heave_fr_s"))]
     rockfill_cases = {c["name"] for c in CASES if c["check"] == "rockfill_overtopping"}
