@@ -27,6 +27,19 @@
 
 namespace porosph::sph {
 
+/// Calls visit(index) for every site of a square (cubic) lattice within `reach` sites of the
+/// origin along each axis, index[k] in [-reach, reach] for k < D (the lattice sums below).
+template <int D, class Visit>
+void for_each_lattice_site(int reach, const Visit& visit) {
+  int index[3] = {-reach, -reach, -reach};
+  for (;;) {
+    visit(static_cast<const int*>(index));
+    int k = 0;
+    while (k < D && ++index[k] > reach) index[k++] = -reach;
+    if (k == D) break;
+  }
+}
+
 /// S = sum_b V_b (x_b - x_a)_x (grad_a W_ab)_x over a square (cubic) lattice of spacing dp around a
 /// particle at the origin, V_b = dp^D: the factor by which kernel gradients on the lattice fall
 /// short of the identity (1). Depends only on the kernel's shape and h / dp.
@@ -37,8 +50,7 @@ double lattice_gradient_sum(const Kernel& kernel, double dp) {
   const int reach = static_cast<int>(std::ceil(kernel.support() / dp));
   const double volume = std::pow(dp, D);
   double sum = 0.0;
-  int index[3] = {-reach, -reach, -reach};
-  for (;;) {
+  for_each_lattice_site<D>(reach, [&](const int* index) {
     double r2 = 0.0;
     for (int k = 0; k < D; ++k) r2 += index[k] * index[k] * dp * dp;
     const double r = std::sqrt(r2);
@@ -47,10 +59,7 @@ double lattice_gradient_sum(const Kernel& kernel, double dp) {
       const double xb = index[0] * dp;
       sum += volume * xb * (kernel.grad_factor(r) * (-xb));
     }
-    int k = 0;
-    while (k < D && ++index[k] > reach) index[k++] = -reach;
-    if (k == D) break;
-  }
+  });
   return sum;
 }
 

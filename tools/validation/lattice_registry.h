@@ -16,6 +16,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "sph/lattice_gradient.h"
+
 namespace porosph::validation {
 
 /// S(o) for a kernel of dimension D with o = (offset along `axis`), 0 across it; `kernel.w(r)`.
@@ -26,18 +28,14 @@ double lattice_kernel_sum(const Kernel& kernel, double dp, int axis, double offs
   const int reach = static_cast<int>(std::ceil(kernel.support() / dp)) + 1;
   const double volume = std::pow(dp, D);
   double sum = 0.0;
-  int index[3] = {-reach, -reach, -reach};
-  for (;;) {
+  sph::for_each_lattice_site<D>(reach, [&](const int* index) {
     double r2 = 0.0;
     for (int k = 0; k < D; ++k) {
       const double x = index[k] * dp - (k == axis ? offset : 0.0);
       r2 += x * x;
     }
     sum += volume * kernel.w(std::sqrt(r2));
-    int k = 0;
-    while (k < D && ++index[k] > reach) index[k++] = -reach;
-    if (k == D) break;
-  }
+  });
   return sum;
 }
 
