@@ -38,8 +38,10 @@ struct SoilParticles {
   std::vector<std::int64_t> material;  ///< index into SoilParams::materials; -1 for walls
   std::vector<std::uint8_t> fixed;     ///< 1 for fixed particles (snapshot field "fixed")
   std::vector<std::uint8_t> no_slip;   ///< fixed: 1 no-slip, 0 free-slip
-  std::vector<std::uint8_t> wet;       ///< has touched water (sticky; wet_cohesion_loss)
-  std::vector<std::int32_t> load;      ///< index of the surface load it carries; -1: none
+  /// fixed: 1 inside a straight stretch of wall (straight_walls.h; 0 in checkpoints before it)
+  std::vector<std::uint8_t> straight_wall;
+  std::vector<std::uint8_t> wet;   ///< has touched water (sticky; wet_cohesion_loss)
+  std::vector<std::int32_t> load;  ///< index of the surface load it carries; -1: none
   /// Walls: the side of a thin wall whose soil sees it (sph::wall_side_tag; 0 for soil and for the
   /// particles of other walls).
   std::vector<std::int32_t> wall_side;
@@ -69,6 +71,7 @@ struct SoilParticles {
     fn(density_rate), fn(reference_density), fn(mass), fn(porosity), fn(plastic_strain);
     fn(saturation), fn(weight_ratio), fn(wet);
     fn(remove_at), fn(id), fn(material), fn(fixed), fn(no_slip), fn(load), fn(wall_side);
+    fn(straight_wall);
   }
 
   /// Re-orders every array: new[i] = old[order[i]]; `order` must keep free before fixed.

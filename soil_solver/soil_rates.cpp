@@ -42,6 +42,9 @@ SoilRateSummary acceleration_loop(const sph::NeighbourList<D>& nl, const Kernel&
     // books (soil_impulse_book.h).
     const double r_i = P.weight_ratio[i];
     Vec acc_mixed = Vec::Zero();
+    Vec wall_plane_normal = Vec::Zero();
+    const bool straight_wall =
+        sees_one_straight_wall<D>(nl, i, P.wall_normal, P.straight_wall, wall_plane_normal);
     auto pair_terms = [&](const auto& pair, const Vec& v_j, bool fixed_j) {
       const auto add = [&](const Vec& term) {
         acc += term;
@@ -54,8 +57,13 @@ SoilRateSummary acceleration_loop(const sph::NeighbourList<D>& nl, const Kernel&
       };
       const std::int32_t j = pair.b;
       const Vec grad_w = kernel.grad_factor(pair.r) * pair.x_ab;
-      add(stress_divergence_acceleration<D>(P.mass[j], sigma_i, P.stress[j], rho_weight_i,
-                                            P.density[j], grad_w));
+      if (fixed_j && straight_wall) {
+        add(wall_stress_divergence_acceleration<D>(P.mass[j], sigma_i, P.stress[j], rho_weight_i,
+                                                   P.density[j], grad_w, wall_plane_normal));
+      } else {
+        add(stress_divergence_acceleration<D>(P.mass[j], sigma_i, P.stress[j], rho_weight_i,
+                                              P.density[j], grad_w));
+      }
       if constexpr (kArtificialStress) {
         if (tension_i | P.in_tension[j]) {  // else R_i + R_j = 0: no term (and no pow)
           const double f_n = artificial_stress_factor(kernel.w(pair.r), w_dp, as_exponent);

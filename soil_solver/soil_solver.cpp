@@ -9,6 +9,7 @@
 #include "soil_solver/soil_output.h"
 #include "soil_solver/soil_rates.h"
 #include "soil_solver/soil_walls.h"
+#include "soil_solver/straight_walls.h"
 #include "soil_solver/stress_filter.h"
 #include "soil_solver/stress_update.h"
 #include "soil_solver/wall_normals.h"
@@ -124,6 +125,9 @@ SoilSolver<D>::SoilSolver(const scene::Scene& s)
     P.no_slip[i] = q.no_slip ? 1 : 0;
     P.wall_side[i] = q.side;
   }
+  const int kernel_reach = static_cast<int>(std::ceil(2.0 * params_.h / dp - 1e-9));
+  P.straight_wall = straight_wall_interior<D>(P.position, P.wall_normal, P.remove_at, P.n_free, dp,
+                                              kernel_reach, box_);
   // Thin walls filled on both sides (soil.thin_walls): the list leaves out the pairs they hide.
   neighbours_.set_occluders(std::move(thin.occluders));
   if (s.water) mark_initially_submerged<D>(s.water->blocks, params_, P);

@@ -5,12 +5,17 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <cmath>
+#include <cstdint>
 #include <random>
+#include <vector>
 
 #include "soil_solver/artificial_stress.h"
 #include "soil_solver/soil_artificial_viscosity.h"
+#include "soil_solver/straight_walls.h"
 #include "soil_solver/stress_divergence.h"
+#include "sph/domain_box.h"
 #include "sph/kernels.h"
+#include "sph/neighbour_list.h"
 
 namespace porosph::soil {
 namespace {
@@ -155,6 +160,111 @@ TEST(StressDivergence, PressureLikeRepulsionAndAntisymmetry) {
   Matrix3d zz = Matrix3d::Zero();
   zz(2, 2) = -1e5;
   EXPECT_EQ(stress_divergence_acceleration<2>(1.0, zz, zz, 1.0, 1.0, V2(1.0, 2.0)), V2::Zero());
+}
+
+// A straight wall (two rows of fixed particles below y = 0, spacing dp) and one soil particle in
+// the first soil row, slid along the wall by o. Sums the wall pairs of both forms.
+struct WallSums {
+  V2 symmetric = V2::Zero(), wall_form = V2::Zero();
+};
+WallSums wall_pair_sums(double o, const Matrix3d& sigma_i, const Matrix3d& sigma_w) {
+  const double dp = 0.01;
+  const sph::CubicSpline<2> kernel(1.2 * dp);
+  const double rho = 1800.0, m = rho * dp * dp;
+  const V2 x_i(o, 0.5 * dp), normal(0.0, 1.0);
+  WallSums sums;
+  for (int row = 0; row < 2; ++row) {
+    for (int k = -4; k <= 4; ++k) {
+      const V2 x_w(k * dp, -(row + 0.5) * dp);
+      const V2 x_iw = x_i - x_w;
+      const double r = x_iw.norm();
+      if (r >= kernel.support()) continue;
+      const V2 grad = kernel.grad_factor(r) * x_iw;
+      sums.symmetric += stress_divergence_acceleration<2>(m, sigma_i, sigma_w, rho, rho, grad);
+      sums.wall_form +=
+          wall_stress_divergence_acceleration<2>(m, sigma_i, sigma_w, rho, rho, grad, normal);
+    }
+  }
+  return sums;
+}
+
+TEST(WallStressDivergence, NoForceAlongTheWallFromAUniformStressWhateverTheRegistry) {
+  // Uniform compression of 10 kPa on both sides. Slid by 0.1 dp, the symmetric form's lattice
+  // ripple pushes along the wall (the measured defect); the wall form gives exactly zero there and
+  // keeps the wall's normal support unchanged.
+  const Matrix3d sigma = -1e4 * Matrix3d::Identity();
+  const WallSums slid = wall_pair_sums(0.001, sigma, sigma);
+  EXPECT_GT(std::abs(slid.symmetric.x()), 1e-4 * std::abs(slid.symmetric.y()));
+  EXPECT_EQ(slid.wall_form.x(), 0.0);
+  EXPECT_NEAR(slid.wall_form.y(), slid.symmetric.y(), 1e-12 * std::abs(slid.symmetric.y()));
+  EXPECT_GT(slid.wall_form.y(), 0.0);  // the wall holds the compressed soil off
+}
+
+TEST(WallStressDivergence, SameAsTheSymmetricFormInRegistry) {
+  // In registry the tangential zeroth-order sum vanishes, so the two forms agree for any stress
+  // (here a shear and unequal normal stresses, different on the wall).
+  Matrix3d sigma_i, sigma_w;
+  sigma_i << -2e4, 300.0, 0.0, 300.0, -1e4, 0.0, 0.0, 0.0, -1e4;
+  sigma_w << -2.1e4, -250.0, 0.0, -250.0, -1.2e4, 0.0, 0.0, 0.0, -1e4;
+  const WallSums aligned = wall_pair_sums(0.0, sigma_i, sigma_w);
+  EXPECT_LE((aligned.wall_form - aligned.symmetric).norm(), 1e-9 * aligned.symmetric.norm());
+}
+
+// The neighbour list's fixed range, as sees_one_straight_wall reads it.
+struct FixedNeighbours {
+  std::vector<sph::NeighbourPair<2>> pairs;
+  auto mid(std::int64_t) const { return pairs.begin(); }
+  auto end(std::int64_t) const { return pairs.end(); }
+};
+
+TEST(WallStressDivergence, StraightWallOnlyWhenEveryWallNeighbourSharesTheNormal) {
+  const double nan = std::nan("");
+  std::vector<V2> normals = {V2(0.0, 2.0), V2(0.0, -1.0), V2(1.0, 0.0),
+                             V2::Zero(),   V2(nan, nan),  V2(0.0, 1.0)};
+  const std::vector<std::uint8_t> interior = {1, 1, 1, 1, 1, 0};  // 5: near the wall's end
+  auto straight = [&](std::vector<std::int32_t> walls, V2& n) {
+    FixedNeighbours nl;
+    for (std::int32_t b : walls) nl.pairs.push_back({V2::Zero(), 1.0, b});
+    return sees_one_straight_wall<2>(nl, 0, normals, interior, n);
+  };
+  V2 n = V2::Zero();
+  EXPECT_TRUE(straight({0, 1}, n));  // one wall's two faces: parallel
+  EXPECT_DOUBLE_EQ(n.norm(), 1.0);
+  EXPECT_DOUBLE_EQ(std::abs(n.y()), 1.0);
+  EXPECT_FALSE(straight({0, 2}, n));  // two walls at a right angle
+  EXPECT_FALSE(straight({0, 3}, n));  // a corner particle
+  EXPECT_FALSE(straight({0, 4}, n));  // no geometric normal
+  EXPECT_FALSE(straight({}, n));      // no wall at all
+  EXPECT_FALSE(straight({0, 5}, n));  // the same normal, but one of them near the wall's end
+}
+
+TEST(StraightWalls, InteriorOnlyWhereTheWallRunsOnPastTheKernelBothWays) {
+  // A floor of 12 sites (normal +y) and, standing on it, a one-layer pile of 8 sites (normal +x,
+  // its side) whose lower end is 2 sites above the floor; reach 3 steps (h = 1.2 dp).
+  const double dp = 0.01;
+  std::vector<V2> x, normal;
+  std::vector<double> remove_at;
+  auto add = [&](V2 p, V2 n, double removal) {
+    x.push_back(p), normal.push_back(n), remove_at.push_back(removal);
+  };
+  add(V2(0.5 * dp, 0.5 * dp), V2::Zero(), -1.0);  // one free particle first
+  for (int k = 0; k < 12; ++k) add(V2((k + 0.5) * dp, -0.5 * dp), V2(0.0, 1.0), -1.0);
+  for (int k = 0; k < 8; ++k) add(V2(5.5 * dp, (k + 2.5) * dp), V2(1.0, 0.0), -1.0);
+  const sph::DomainBox<2> box;
+  std::vector<std::uint8_t> in = straight_wall_interior<2>(x, normal, remove_at, 1, dp, 3, box);
+  EXPECT_EQ(in[0], 0);  // free
+  for (int k = 0; k < 12; ++k) EXPECT_EQ(in[1 + k], k >= 3 && k <= 8 ? 1 : 0) << "floor " << k;
+  for (int k = 0; k < 8; ++k) EXPECT_EQ(in[13 + k], k >= 3 && k <= 4 ? 1 : 0) << "pile " << k;
+  // The same floor periodic along x: no end, every site interior.
+  sph::DomainBox<2> periodic;
+  periodic.min = V2(0.0, -1.0), periodic.max = V2(12 * dp, 1.0), periodic.periodic = {true, false};
+  in = straight_wall_interior<2>(x, normal, remove_at, 1, dp, 3, periodic);
+  for (int k = 0; k < 12; ++k) EXPECT_EQ(in[1 + k], 1) << "periodic floor " << k;
+  // A gate (removed at 1 s) is not a continuation of the wall beside it.
+  for (int k = 6; k < 12; ++k) remove_at[1 + k] = 1.0;
+  in = straight_wall_interior<2>(x, normal, remove_at, 1, dp, 3, box);
+  EXPECT_EQ(in[1 + 3], 0);  // 3 steps from the gate
+  EXPECT_EQ(in[1 + 2], 0);  // 2 steps from the floor's end and 3 from the gate
 }
 
 }  // namespace
