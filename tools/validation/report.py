@@ -66,7 +66,8 @@ CASES = [
          + [f"soil.materials[{m}].young_modulus=2.0e5" for m in range(3)],
          extra=["--window", "0.5"], plot=case_plots.fluidized_bed,
          notes="dp 2 mm, E softened 25x and the ramp shortened to 1 s (docs/coupling.md says why "
-               "the equilibrium does not depend on either); the paper-resolution runs are in "
+               "the equilibrium does not depend on either); the paper-resolution runs, and why "
+               "the scene has the Shepard density filter off, are in "
                "docs/validation-studies.md."),
     case("rockfill_q19", "Rockfill core overtopping (paper 4.2), Q = 19.36 l/s",
          "cases/rockfill_overtopping/scene.toml", "rockfill_overtopping",

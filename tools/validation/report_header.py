@@ -45,5 +45,10 @@ HEADER = ["# Validation report", "",
           "0.198 m at dp 2.5 mm), and dp 10 mm fails at 5.70 s, dp 5 mm not by 6 s; the "
           "gravel's advance still does not converge: 46.7 / 37.5 / 25.4 mm by 5.8 s with "
           "dp 2.5 mm rerun on the current model (2026-12-06, session 28: no failure, head "
-          "0.198 m at 6.2 s; it agrees with the coarser levels to ~2.5 s, then stops).",
+          "0.198 m at 6.2 s; it agrees with the coarser levels to ~2.5 s, then stops)."
+          " Since 2026-12-06 (session 29) the soil's wall pairs use the difference form "
+          "along a straight wall's plane (docs/soil.md, Walls): the soil_column, "
+          "granular_collapse and fluidized_bed rows and their series were rerun with it; the "
+          "heave's dp 5 mm level with it fails at 6.00 s (advance 38.4 mm by 5.8 s, 37.5 mm "
+          "before); the heave's dp 2.5 and 10 mm levels and the rockfill rows predate it.",
           ""]
