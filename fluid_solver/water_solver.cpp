@@ -250,8 +250,10 @@ void WaterSolver<D>::integrate(double dt) {
   book_water_integration(P, params_.gravity, dt, dt_previous_, euler, zones_, open_, book_);
   std::int64_t past_zone = 0;  // zone particles past their downstream face
   const bool shifting = params_.shifting_on() && shifting_.concentration.size() == P.n_free;
+  sph::FirstCrossing<D> crossing;  // a free particle carried across a thin wall
 #pragma omp parallel for schedule(static) reduction(+ : past_zone)
   for (std::int64_t a = 0; a < n; ++a) {
+    const sph::Vec<D> before = P.position[a];
     if (P.zone[a] >= 0) {  // prescribed velocity (flow_zones.h, open_reservoirs.h)
       const int z = P.zone[a];
       past_zone += open_.owns(z)
@@ -263,8 +265,11 @@ void WaterSolver<D>::integrate(double dt) {
     }
     sph::verlet_step_scalar(P.density[a], P.density_previous[a], P.density_rate[a], dt, euler);
     if (shifting) shifting_.shift(params_.particle_shifting, params_.h, dt, a, P);
+    if (const int wall = this->crossed_occluder_by(a, before); wall >= 0)
+      crossing.offer(a, wall, before, P.position[a]);
     box_.wrap(P.position[a]);
   }
+  this->record_crossing("water", crossing);
   // The particles born are inserted at the end of the free range: their momentum is booked.
   std::size_t free_before = P.n_free;
   if (past_zone > 0) born_count_ += zones_.renew(P, params_.volume, next_id_, inflow_mass_);

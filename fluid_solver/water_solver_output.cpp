@@ -12,6 +12,7 @@ namespace porosph::water {
 
 template <int D>
 std::optional<std::string> WaterSolver<D>::find_non_finite(std::int64_t* particle_id) const {
+  if (auto crossing = this->crossing_problem(particle_id)) return crossing;
   const WaterParticles<D>& P = particles_;
   const std::int64_t n = static_cast<std::int64_t>(P.size());
   const std::size_t values = P.size() * D;

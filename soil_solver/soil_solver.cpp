@@ -262,15 +262,20 @@ void SoilSolver<D>::advance(double dt) {
   kernel_.visit(
       [this, &P](const auto& kernel) { compute_soil_kinematics(neighbours_, kernel, P); });
   update_stresses(dt);
+  sph::FirstCrossing<D> crossing;  // a free particle carried across a thin wall
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {  // drift
+    const sph::Vec<D> before = P.position[i];
     P.position[i] += dt * P.velocity[i];
+    if (const int wall = this->crossed_occluder_by(i, before); wall >= 0)
+      crossing.offer(i, wall, before, P.position[i]);
     P.displacement[i] += dt * P.velocity[i];
     P.density[i] += dt * P.density_rate[i];
     const SoilMaterialConstants& m = params_.materials[P.material[i]];
     P.porosity[i] = porous::porosity_from_density(m.porosity, P.reference_density[i], P.density[i]);
     box_.wrap(P.position[i]);
   }
+  if (crossing.index >= 0) this->record_crossing("soil", crossing);
   scalars_.time += dt;
   ++scalars_.step;
   if (damping_.release(scalars_.time)) {  // the end of the damping stage
@@ -308,6 +313,7 @@ void SoilSolver<D>::remove_particles_outside() {
 
 template <int D>
 std::optional<std::string> SoilSolver<D>::find_non_finite(std::int64_t* particle_id) const {
+  if (auto crossing = this->crossing_problem(particle_id)) return crossing;
   return find_non_finite_soil(particles_, scalars_.step, scalars_.time, particle_id);
 }
 

@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -19,6 +20,7 @@
 #include "io/checkpoint_file.h"
 #include "sph/checkpoint_arrays.h"
 #include "sph/neighbour_list.h"
+#include "sph/occluder_crossing.h"
 #include "sph/particle_removal.h"
 #include "sph/solver_scalars.h"
 #include "sph/time_step_limits.h"
@@ -93,6 +95,27 @@ class ParticleSolverCore {
         remove_free_particles(particles_, leaves, keep_scratch_, scalars_.outflow_mass, removing);
   }
 
+  /// The occluder (thin wall) free particle a's move from `before` to its position now crossed,
+  /// or -1 (always -1 without occluders). Called in the drift loops before the periodic wrap.
+  int crossed_occluder_by(std::size_t a, const Vec<D>& before) const {
+    const WallOccluders<D>& occluders = neighbours_.occluders();
+    if (occluders.empty()) return -1;
+    return sph::crossed_occluder<D>(occluders, before, particles_.position[a]);
+  }
+  /// Keeps the first crossing of a run (occluder_crossing.h) for crossing_problem().
+  void record_crossing(const char* kind, const FirstCrossing<D>& c) {
+    if (crossing_problem_ || c.index < 0) return;
+    crossing_particle_ = particles_.id[c.index];
+    crossing_problem_ =
+        occluder_crossing_message<D>(kind, crossing_particle_, neighbours_.occluders()[c.wall],
+                                     c.before, c.after, scalars_.step, scalars_.time);
+  }
+  /// The crossing recorded, if any, with its particle's id: find_non_finite() reports it first.
+  std::optional<std::string> crossing_problem(std::int64_t* particle_id) const {
+    if (crossing_problem_ && particle_id) *particle_id = crossing_particle_;
+    return crossing_problem_;
+  }
+
   /// Removes the fixed particles whose time has come (a wall's remove_at; particle_removal.h).
   void remove_expired_walls() {
     if (scalars_.next_wall_removal < 0.0 || scalars_.time < scalars_.next_wall_removal) return;
@@ -134,7 +157,9 @@ class ParticleSolverCore {
   std::vector<std::string> terms_;
   /// The particles of the overlap set the last fill_state() reported, in its order.
   std::vector<std::int32_t> overlap_index_;
-  bool interaction_fresh_ = false;  ///< add_interaction called since the last advance
+  bool interaction_fresh_ = false;               ///< add_interaction called since the last advance
+  std::optional<std::string> crossing_problem_;  ///< a free particle crossed a thin wall
+  std::int64_t crossing_particle_ = -1;
   std::vector<std::uint8_t> keep_scratch_;
 };
 

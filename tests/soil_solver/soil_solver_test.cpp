@@ -323,5 +323,35 @@ TEST(SoilSolver, AThinWallPartsTheSoilOnItsTwoSides) {
   }
 }
 
+TEST(SoilSolver, AParticleCarriedAcrossAThinWallStopsTheRunNamingIt) {
+  // The thin wall of the test above; the free particle next to its left face, thrown at it at
+  // 20 m/s for one 1 ms step, lands 2 cm on: past the mid-plane x = 0.205. The solver reports it
+  // as a bad state (proto/solver_runtime.h stops the run with the message), naming the particle.
+  scene::Scene s = soil_scene({-0.1, -0.1}, {0.5, 0.5});
+  s.soil->blocks = {box({0.0, 0.0}, {0.4, 0.1}, "sand")};
+  s.walls = {box({0.2, 0.0}, {0.21, 0.3}), container({0.0, 0.0}, {0.4, 0.3}, 3)};
+  SoilSolver<2> solver(s);
+  solver.compute_rates();
+  EXPECT_FALSE(solver.find_non_finite(nullptr).has_value());
+  auto& P = solver.mutable_particles();
+  std::size_t thrown = P.n_free;
+  for (std::size_t i = 0; i < P.n_free; ++i) {
+    if (std::abs(P.position[i][0] - 0.195) < 1e-9 && std::abs(P.position[i][1] - 0.055) < 1e-9)
+      thrown = i;
+  }
+  ASSERT_LT(thrown, P.n_free);
+  const std::int64_t thrown_id = P.id[thrown];
+  P.velocity[thrown] = sph::Vec<2>(20.0, 0.0);
+  solver.advance(1e-3);
+  std::int64_t id = -1;
+  const auto message = solver.find_non_finite(&id);
+  ASSERT_TRUE(message.has_value());
+  EXPECT_EQ(id, thrown_id);
+  EXPECT_NE(message->find("soil particle " + std::to_string(thrown_id) +
+                          " crossed the thin wall at x0 = 0.205"),
+            std::string::npos)
+      << *message;
+}
+
 }  // namespace
 }  // namespace porosph::soil

@@ -8,9 +8,11 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <string>
 #include <utility>
 
 #include "sph/neighbour_list.h"
+#include "sph/occluder_crossing.h"
 
 namespace porosph::sph {
 namespace {
@@ -47,6 +49,25 @@ TEST(WallOccluders, APairIsHiddenOnlyWhereItsSegmentCrossesThePatch) {
   EXPECT_TRUE(o.hides(V(0.01, 0.1), left, V(0.02, 0.1), 0));
   EXPECT_TRUE(o.hides(V(-0.01, 0.01), 0, V(0.0, 0.035), right));  // a left particle under the tip
   EXPECT_FALSE(o.hides(V(0.01, 0.01), 0, V(0.0, 0.035), right));
+}
+
+TEST(OccluderCrossing, AMoveThroughThePatchIsCaughtAndTheLowestIndexKept) {
+  WallOccluders<2> o;
+  o.add(occluder_of<2>(box({-0.005, 0.03}, {0.005, 0.32}), 0));
+  EXPECT_EQ(crossed_occluder<2>(o, V(-0.001, 0.1), V(0.001, 0.1)), 0);     // through the wall
+  EXPECT_EQ(crossed_occluder<2>(o, V(-0.001, 0.02), V(0.001, 0.02)), -1);  // under its tip
+  EXPECT_EQ(crossed_occluder<2>(o, V(-0.003, 0.1), V(-0.001, 0.2)), -1);   // along it
+  FirstCrossing<2> first;
+  EXPECT_EQ(first.index, -1);
+  first.offer(7, 0, V(-0.001, 0.1), V(0.001, 0.1));
+  first.offer(3, 0, V(-0.001, 0.2), V(0.001, 0.2));
+  first.offer(5, 0, V(-0.001, 0.3), V(0.001, 0.3));
+  EXPECT_EQ(first.index, 3);
+  EXPECT_EQ(first.before, V(-0.001, 0.2));
+  const std::string message =
+      occluder_crossing_message<2>("water", 42, o[0], first.before, first.after, 9, 0.5);
+  EXPECT_NE(message.find("water particle 42 crossed the thin wall at x0 = 0"), std::string::npos);
+  EXPECT_NE(message.find("step 9, t = 0.5 s"), std::string::npos);
 }
 
 TEST(WallOccluders, EachSideIsFilledWithAFullSupportOfItsOwn) {
