@@ -323,6 +323,35 @@ TEST(SoilSolver, AThinWallPartsTheSoilOnItsTwoSides) {
   }
 }
 
+TEST(SoilSolver, EveryLayerOfAStraightWallKnowsItsAxis) {
+  // A container of three layers around a sand bed (dp 10 mm). Each layer of its side wall, the
+  // middle one too (open at the same distance on both faces), has its normal along x, and lies
+  // inside a straight stretch at mid-height (straight_walls.h); a corner particle has none. Before
+  // 2026-12-06 the middle layer counted as a corner: not mirrored, it passed the soil's shear to
+  // the frictionless wall (docs/validation-studies.md, soil_column).
+  scene::Scene s = soil_scene({-0.1, -0.1}, {0.5, 0.5});
+  s.soil->blocks = {box({0.0, 0.0}, {0.4, 0.1}, "sand")};
+  s.walls = {container({0.0, 0.0}, {0.4, 0.3}, 3)};
+  SoilSolver<2> solver(s);
+  const auto& P = solver.particles();
+  int side_layers = 0, corners = 0;
+  for (std::size_t w = P.n_free; w < P.size(); ++w) {
+    const sph::Vec<2>& x = P.position[w];
+    if (x[0] < 0.0 && std::abs(x[1] - 0.155) < 1e-9) {
+      ++side_layers;
+      EXPECT_EQ(std::abs(P.wall_normal[w][0]), 1.0) << "layer at x = " << x[0];
+      EXPECT_EQ(P.wall_normal[w][1], 0.0);
+      EXPECT_EQ(P.straight_wall[w], 1) << "layer at x = " << x[0];
+    }
+    if (x[0] < 0.0 && x[1] < 0.0) {
+      ++corners;
+      EXPECT_EQ(P.straight_wall[w], 0);
+    }
+  }
+  EXPECT_EQ(side_layers, 3);
+  EXPECT_EQ(corners, 9);
+}
+
 TEST(SoilSolver, AParticleCarriedAcrossAThinWallStopsTheRunNamingIt) {
   // The thin wall of the test above; the free particle next to its left face, thrown at it at
   // 20 m/s for one 1 ms step, lands 2 cm on: past the mid-plane x = 0.205. The solver reports it
