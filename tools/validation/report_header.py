@@ -47,8 +47,10 @@ HEADER = ["# Validation report", "",
           "dp 2.5 mm rerun on the current model (2026-12-06, session 28: no failure, head "
           "0.198 m at 6.2 s; it agrees with the coarser levels to ~2.5 s, then stops)."
           " Since 2026-12-06 (session 29) the soil's wall pairs use the difference form "
-          "along a straight wall's plane (docs/soil.md, Walls): the soil_column, "
-          "granular_collapse and fluidized_bed rows and their series were rerun with it; the "
+          "along a straight wall's plane, and the middle layer of a three-layer wall is "
+          "mirrored like the others (docs/soil.md, Walls): the soil_column and "
+          "granular_collapse rows and their series were rerun with both, the fluidized_bed "
+          "row and series with the first (every figure as before); the "
           "heave's dp 10 / 5 mm levels with it fail at 5.90 / 6.00 s (advance 44.4 / 38.4 mm "
           "by 5.8 s; before 5.70 s / none, 46.7 / 37.5 mm); the heave's dp 2.5 mm level and "
           "the rockfill rows predate it.",
