@@ -6,6 +6,7 @@
 
 #include "soil_solver/artificial_stress.h"
 #include "soil_solver/soil_artificial_viscosity.h"
+#include "soil_solver/straight_walls.h"
 #include "soil_solver/stress_divergence.h"
 #include "soil_solver/velocity_gradient.h"
 #include "sph/kernels.h"

@@ -275,7 +275,7 @@ void SoilSolver<D>::advance(double dt) {
     P.porosity[i] = porous::porosity_from_density(m.porosity, P.reference_density[i], P.density[i]);
     box_.wrap(P.position[i]);
   }
-  if (crossing.index >= 0) this->record_crossing("soil", crossing);
+  this->record_crossing("soil", crossing);
   scalars_.time += dt;
   ++scalars_.step;
   if (damping_.release(scalars_.time)) {  // the end of the damping stage

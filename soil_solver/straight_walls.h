@@ -84,4 +84,26 @@ std::vector<std::uint8_t> straight_wall_interior(const std::vector<sph::Vec<D>>&
   return interior;
 }
 
+/// True when every fixed neighbour of free particle i (the list's [mid, end) range) lies inside a
+/// straight stretch of wall (`straight_wall` above, whose normals are axis-aligned) with its normal
+/// on one axis (one wall, or the two faces of a thin one); `unit_normal` is then that axis. False
+/// without fixed neighbours, or near a corner, a wall's end, a sloped wall or two walls at an
+/// angle.
+template <int D, class NeighbourList>
+inline bool sees_one_straight_wall(const NeighbourList& nl, std::int64_t i,
+                                   const std::vector<sph::Vec<D>>& wall_normals,
+                                   const std::vector<std::uint8_t>& straight_wall,
+                                   sph::Vec<D>& unit_normal) {
+  int axis = -1;
+  for (auto it = nl.mid(i); it != nl.end(i); ++it) {
+    if (!straight_wall[it->b]) return false;
+    const int a = normal_axis<D>(wall_normals[it->b]);
+    if (a < 0 || (axis >= 0 && a != axis)) return false;
+    axis = a;
+  }
+  if (axis < 0) return false;
+  unit_normal = sph::Vec<D>::Unit(axis);
+  return true;
+}
+
 }  // namespace porosph::soil

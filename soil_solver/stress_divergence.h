@@ -7,9 +7,6 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <cmath>
-#include <cstdint>
-#include <vector>
 
 #include "soil_solver/velocity_gradient.h"
 #include "sph/vector.h"
@@ -37,13 +34,13 @@ inline sph::Vec<D> stress_divergence_acceleration(double m_j, const Eigen::Matri
 /// the soil has slid along the wall by a fraction o of a spacing: then it is sigma_i / dp times a
 /// lattice ripple that grows with o / dp, a force along the wall of order weight x settlement /
 /// dp. Used only where every fixed neighbour of i lies inside one straight wall
-/// (sees_one_straight_wall): near a corner or a wall's end (the end face of a sheet pile) the
-/// walls' tangential sum is a real force, and the symmetric form is kept there. In a column
-/// settling between frictionless walls it hung 0.32 / 0.56 % of the weight on the walls at dp 10 /
-/// 5 mm (docs/validation-studies.md, soil_column). The difference form along the plane keeps the
-/// walls' share of the stress divergence (exact for a linear stress field) without that term.
-/// Reference: the zeroth-order consistency of SPH gradients, Bonet & Lok (1999) eq. 21; Adami, Hu &
-/// Adams (2012) for the wall's extrapolated stress.
+/// (sees_one_straight_wall, straight_walls.h): near a corner or a wall's end (the end face of a
+/// sheet pile) the walls' tangential sum is a real force, and the symmetric form is kept there. In
+/// a column settling between frictionless walls it hung 0.32 / 0.56 % of the weight on the walls at
+/// dp 10 / 5 mm (docs/validation-studies.md, soil_column). The difference form along the plane
+/// keeps the walls' share of the stress divergence (exact for a linear stress field) without that
+/// term. Reference: the zeroth-order consistency of SPH gradients, Bonet & Lok (1999) eq. 21;
+/// Adami, Hu & Adams (2012) for the wall's extrapolated stress.
 template <int D>
 inline sph::Vec<D> wall_stress_divergence_acceleration(double m_w, const Eigen::Matrix3d& sigma_i,
                                                        const Eigen::Matrix3d& sigma_w, double rho_i,
@@ -53,33 +50,6 @@ inline sph::Vec<D> wall_stress_divergence_acceleration(double m_w, const Eigen::
   const sph::Vec<D> grad_plane = grad_w_iw - grad_normal;
   const MatD<D> s_i = in_plane_block<D>(sigma_i), s_w = in_plane_block<D>(sigma_w);
   return (m_w / (rho_i * rho_w)) * ((s_i + s_w) * grad_normal + (s_w - s_i) * grad_plane);
-}
-
-/// True when every fixed neighbour of free particle i (the list's [mid, end) range) lies inside a
-/// straight stretch of wall (`straight_wall`, straight_walls.h) and has a normal parallel to the
-/// first one's (one wall, or the two faces of a thin one); `unit_normal` is then that normal,
-/// normalised. False without fixed neighbours, or near a corner, a wall's end, a sloped wall or
-/// two walls at an angle.
-template <int D, class NeighbourList>
-inline bool sees_one_straight_wall(const NeighbourList& nl, std::int64_t i,
-                                   const std::vector<sph::Vec<D>>& wall_normals,
-                                   const std::vector<std::uint8_t>& straight_wall,
-                                   sph::Vec<D>& unit_normal) {
-  constexpr double kParallel = 1.0 - 1e-9;  // |cos| of normals that count as one direction
-  bool first = true;
-  for (auto it = nl.mid(i); it != nl.end(i); ++it) {
-    if (!straight_wall[it->b]) return false;
-    const sph::Vec<D>& n = wall_normals[it->b];
-    const double norm = n.norm();
-    if (!(norm > 0.0) || !std::isfinite(norm)) return false;
-    if (first) {
-      unit_normal = n / norm;
-      first = false;
-    } else if (std::abs(unit_normal.dot(n)) < kParallel * norm) {
-      return false;
-    }
-  }
-  return !first;
 }
 
 }  // namespace porosph::soil
