@@ -222,9 +222,12 @@ struct SoilPhase {
   /// "separating": thin box walls in the soil part it at any thickness (sph/wall_occluders.h) |
   /// "shared": their particles are neighbours of both sides
   std::string thin_walls = "separating";
-  double damping_coefficient = 0.02;    ///< D = coefficient sqrt(E / (rho h^2))
-  int stress_filter_every = 0;          ///< stress filter every N steps; 0: off
-  std::string stress_filter = "mls";    ///< its weights: "shepard" | "mls"
+  /// "images": eq. 5 against a straight wall from mirror images of the soil (wall_mirror.h) |
+  /// "wall_particles": from the wall particles
+  std::string wall_stress = "images";
+  double damping_coefficient = 0.02;  ///< D = coefficient sqrt(E / (rho h^2))
+  int stress_filter_every = 0;        ///< stress filter every N steps; 0: off
+  std::string stress_filter = "mls";  ///< its weights: "shepard" | "mls"
   std::vector<SoilMaterial> materials;
   std::vector<Shape> blocks;    ///< regions filled with soil at t = 0; `material` names one
   std::vector<SoilLoad> loads;  ///< surface loads

@@ -141,6 +141,7 @@ SoilPhase build_soil_phase(const toml::table& soil) {
   p.solver = text_of(soil, "solver");
   p.wall_condition = text_of(soil, "wall_condition");
   p.thin_walls = text_of(soil, "thin_walls");
+  p.wall_stress = text_of(soil, "wall_stress");
   p.alpha = *soil["alpha"].value<double>();
   p.beta = *soil["beta"].value<double>();
   p.artificial_stress_epsilon = *soil["artificial_stress_epsilon"].value<double>();

@@ -164,6 +164,32 @@ void add_soil_terms(std::vector<TermSpec>& t) {
                 "interacts across the wall's mid-plane (sph/wall_occluders.h); \"shared\": the "
                 "soil on the two sides are neighbours through the wall and its particles take "
                 "the stress of both.")}));
+  t.push_back(soil_term(
+      "wall_images",
+      "Stress divergence (eq. 5), velocity gradient and continuity against a straight wall from "
+      "mirror images of the soil, which slide with it (ghost particles, Libersky et al. 1993); "
+      "soil_solver/wall_mirror.h.",
+      "a free-slip wall acting on soil and soil.wall_stress = \"images\"",
+      [](const Scene& s) {
+        const auto walls = s.walls_acting_on("soil");
+        return soil(s).wall_stress == "images" &&
+               std::any_of(walls.begin(), walls.end(), [&](const Shape& w) {
+                 return w.condition == "free_slip" ||
+                        (w.condition == "default" && soil(s).wall_condition == "free_slip");
+               });
+      },
+      {Key("soil.wall_stress", T::String)
+           .fallback("\"images\"")
+           .one_of({"images", "wall_particles"})
+           .doc(
+               "How eq. 5, the velocity gradient and the continuity equation see a straight "
+               "free-slip wall (every wall particle within 2h inside a straight stretch, on one "
+               "axis and one side; elsewhere, and at no-slip walls, the wall particles always "
+               "act). images: the mirror images of the soil across the wall's face (stress "
+               "reflected, weight continued, normal velocity mirrored), which slide with the "
+               "soil; wall_particles: the "
+               "wall particles, whose sums change as the soil's lattice slides along them (a push "
+               "off the wall and a density change that grow as dp falls; docs/soil.md, Walls).")}));
   t.push_back(
       soil_term("geostatic_initial_stress",
                 "At-rest initial stress from the weight above; "

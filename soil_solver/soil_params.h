@@ -56,6 +56,9 @@ struct SoilParams : sph::ParticleSpacing {  // dp, h, volume
   /// soil.thin_walls = "separating": thin walls in the soil are filled once per side and hide the
   /// pairs across them (sph/wall_occluders.h).
   bool two_sided_thin_walls = false;
+  /// soil.wall_stress = "images": eq. 5 against a straight wall from mirror images of the soil
+  /// (wall_mirror.h).
+  bool wall_images = false;
   double damping_duration = 0.0;      ///< [s]; 0: no damping stage
   double damping_coefficient = 0.02;  ///< D = coefficient sqrt(E / (rho h^2))
   double cfl = 0.2, c_a = 0.25;
@@ -92,6 +95,7 @@ struct SoilParams : sph::ParticleSpacing {  // dp, h, volume
                                       {"no_slip", "free_slip"}) == "no_slip";
     p.geostatic_initial = on("geostatic_initial_stress");
     p.two_sided_thin_walls = on("thin_walls_two_sided");
+    p.wall_images = on("wall_images");
     p.damping_duration = on("damping_stage") ? soil.damping_duration : 0.0;
     p.damping_coefficient = soil.damping_coefficient;
     p.cfl = s.run.cfl;

@@ -9,6 +9,7 @@
 #include "soil_solver/straight_walls.h"
 #include "soil_solver/stress_divergence.h"
 #include "soil_solver/velocity_gradient.h"
+#include "soil_solver/wall_mirror.h"
 #include "sph/kernels.h"
 
 namespace porosph::soil {
@@ -46,6 +47,9 @@ SoilRateSummary acceleration_loop(const sph::NeighbourList<D>& nl, const Kernel&
     Vec wall_plane_normal = Vec::Zero();
     const bool straight_wall =
         sees_one_straight_wall<D>(nl, i, P.wall_normal, P.straight_wall, wall_plane_normal);
+    MirrorFace<D> face;
+    const bool images = straight_wall && prm.wall_images &&
+                        find_mirror_face<D>(nl, i, P, prm.dp, wall_plane_normal, face);
     auto pair_terms = [&](const auto& pair, const Vec& v_j, bool fixed_j) {
       const auto add = [&](const Vec& term) {
         acc += term;
@@ -58,7 +62,9 @@ SoilRateSummary acceleration_loop(const sph::NeighbourList<D>& nl, const Kernel&
       };
       const std::int32_t j = pair.b;
       const Vec grad_w = kernel.grad_factor(pair.r) * pair.x_ab;
-      if (fixed_j && straight_wall) {
+      if (fixed_j && images) {
+        // eq. 5 against this wall comes from the images below
+      } else if (fixed_j && straight_wall) {
         add(wall_stress_divergence_acceleration<D>(P.mass[j], sigma_i, P.stress[j], rho_weight_i,
                                                    P.density[j], grad_w, wall_plane_normal));
       } else {
@@ -79,6 +85,12 @@ SoilRateSummary acceleration_loop(const sph::NeighbourList<D>& nl, const Kernel&
     };
     for (auto it = nl.begin(i); it != nl.mid(i); ++it) pair_terms(*it, P.velocity[it->b], false);
     for (auto it = nl.mid(i); it != nl.end(i); ++it) pair_terms(*it, P.wall_velocity[it->b], true);
+    if (images) {
+      const Vec from_images =
+          mirror_stress_divergence_acceleration<D>(nl, kernel, i, P, rho_weight_i, g, face);
+      acc += from_images;
+      acc_wall += from_images;
+    }
     acc += g;
     P.acceleration[i] = acc;
     P.wall_acceleration[i] = acc_wall;
@@ -127,12 +139,18 @@ SoilRateSummary compute_soil_rates(const sph::NeighbourList<D>& neighbours, cons
 
 template <int D, class Kernel>
 void compute_soil_kinematics(const sph::NeighbourList<D>& nl, const Kernel& kernel,
-                             SoilParticles<D>& P) {
+                             const SoilParams<D>& prm, SoilParticles<D>& P) {
   using Vec = sph::Vec<D>;
   using Mat = MatD<D>;
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::int64_t i = 0; i < n; ++i) {
+    Vec wall_plane_normal = Vec::Zero();
+    MirrorFace<D> face;
+    const bool images =
+        prm.wall_images &&
+        sees_one_straight_wall<D>(nl, i, P.wall_normal, P.straight_wall, wall_plane_normal) &&
+        find_mirror_face<D>(nl, i, P, prm.dp, wall_plane_normal, face);
     const Vec v_i = P.velocity[i];
     Mat grad_v = Mat::Zero();
     double divergence = 0.0;
@@ -143,7 +161,8 @@ void compute_soil_kinematics(const sph::NeighbourList<D>& nl, const Kernel& kern
       accumulate_velocity_gradient<D>(grad_v, volume_j, Vec(P.velocity[j] - v_i), grad_w);
       divergence += volume_j * (v_i - P.velocity[j]).dot(grad_w);
     }
-    for (auto it = nl.mid(i); it != nl.end(i); ++it) {  // fixed: own velocity in continuity
+    if (images) add_mirror_kinematics<D>(nl, kernel, i, P, face, grad_v, divergence);
+    for (auto it = nl.mid(i); it != nl.end(i) && !images; ++it) {  // fixed: own v in continuity
       const std::int32_t w = it->b;
       const Vec grad_w = kernel.grad_factor(it->r) * it->x_ab;
       const double volume_w = P.mass[w] / P.density[w];
@@ -158,8 +177,8 @@ void compute_soil_kinematics(const sph::NeighbourList<D>& nl, const Kernel& kern
 #define POROSPH_INSTANTIATE(D, KERNEL)                                                          \
   template SoilRateSummary compute_soil_rates<D, KERNEL<D>>(                                    \
       const sph::NeighbourList<D>&, const KERNEL<D>&, const SoilParams<D>&, SoilParticles<D>&); \
-  template void compute_soil_kinematics<D, KERNEL<D>>(const sph::NeighbourList<D>&,             \
-                                                      const KERNEL<D>&, SoilParticles<D>&);
+  template void compute_soil_kinematics<D, KERNEL<D>>(                                          \
+      const sph::NeighbourList<D>&, const KERNEL<D>&, const SoilParams<D>&, SoilParticles<D>&);
 POROSPH_INSTANTIATE(2, sph::CubicSpline)
 POROSPH_INSTANTIATE(2, sph::WendlandC2)
 POROSPH_INSTANTIATE(3, sph::CubicSpline)

@@ -9,7 +9,9 @@
 //   eq. 7-8     velocity gradient L (strain rate and spin)             velocity_gradient.h
 //   continuity  drho_i/dt = rho_i sum_j V_j (v_i - v_j) . grad_i W_ij
 // Fixed neighbours enter with their extrapolated stress and density (soil_walls.h), and with their
-// mirrored velocity (all of it for no-slip, its normal part for free-slip) in L and the viscosity.
+// mirrored velocity (all of it for no-slip, its normal part for free-slip) in L and the viscosity;
+// against a straight wall, eq. 5, L and the continuity equation sum over mirror images of the soil
+// instead (soil.wall_stress = "images", wall_mirror.h).
 // Terms that are off are compiled out of the pair loop (template flags).
 #pragma once
 
@@ -40,6 +42,6 @@ SoilRateSummary compute_soil_rates(const sph::NeighbourList<D>& neighbours, cons
 /// velocities (positions unchanged since the neighbour search).
 template <int D, class Kernel>
 void compute_soil_kinematics(const sph::NeighbourList<D>& neighbours, const Kernel& kernel,
-                             SoilParticles<D>& P);
+                             const SoilParams<D>& params, SoilParticles<D>& P);
 
 }  // namespace porosph::soil

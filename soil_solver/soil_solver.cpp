@@ -260,7 +260,7 @@ void SoilSolver<D>::advance(double dt) {
   // Strain rate, spin and drho/dt from the new velocities at the old positions (the neighbour
   // list of this step is still exact), then the stress update.
   kernel_.visit(
-      [this, &P](const auto& kernel) { compute_soil_kinematics(neighbours_, kernel, P); });
+      [this, &P](const auto& kernel) { compute_soil_kinematics(neighbours_, kernel, params_, P); });
   update_stresses(dt);
   sph::FirstCrossing<D> crossing;  // a free particle carried across a thin wall
 #pragma omp parallel for schedule(static)

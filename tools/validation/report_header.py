@@ -53,5 +53,11 @@ HEADER = ["# Validation report", "",
           "row and series with the first (every figure as before); the "
           "heave's dp 10 / 5 mm levels with it fail at 5.90 / 6.00 s (advance 44.4 / 38.4 mm "
           "by 5.8 s; before 5.70 s / none, 46.7 / 37.5 mm); the heave's dp 2.5 mm level and "
-          "the rockfill rows predate it.",
+          "the rockfill rows predate it. Since 2026-12-06 (session 30) eq. 5, the velocity "
+          "gradient and the continuity equation see a straight free-slip soil wall through "
+          "mirror images of the soil (`soil.wall_stress`, docs/soil.md, Walls), and "
+          "`porosph_validate soil_column` judges the mean stress of the free stage below the top "
+          "4 cm and above the bottom 4 cm: the soil_column row and series were rerun with both; "
+          "no-slip soil walls (the granular collapse, the heave, the rockfill, the fluidized "
+          "bed, the consolidation) are unchanged to the bit (granular_collapse rerun).",
           ""]
