@@ -98,6 +98,25 @@ inline Eigen::Matrix3d mirrored_stress(const Eigen::Matrix3d& sigma_j, double rh
   return mirror * sigma_j * mirror - weight * Eigen::Matrix3d::Identity();
 }
 
+/// Calls visit(j, height_j, x_image, r) for the image of i itself and of each free neighbour j of
+/// i that lies on i's side of `face` (height_j > 0: not a thin wall's other side) and within the
+/// kernel's support of i: x_image = x_i - x_j' = x_ij + 2 height_j n, r = |x_image|, with
+/// height_j = (x_j - x_f) . n = distance_i - n . x_ij (x_ij = x_i - x_j).
+template <int D, class NeighbourList, class Visit>
+void visit_images(const NeighbourList& nl, double support, std::int64_t i,
+                  const MirrorFace<D>& face, Visit&& visit) {
+  using Vec = sph::Vec<D>;
+  const auto image = [&](std::int64_t j, const Vec& x_ij) {
+    const double height_j = face.distance - face.normal.dot(x_ij);
+    if (height_j <= 0.0) return;
+    const Vec x_image = x_ij + (2.0 * height_j) * face.normal;
+    const double r = x_image.norm();
+    if (r < support) visit(j, height_j, x_image, r);
+  };
+  image(i, Vec::Zero());
+  for (auto it = nl.begin(i); it != nl.mid(i); ++it) image(it->b, it->x_ab);
+}
+
 /// Acceleration of free particle i from the images of itself and of its free neighbours across
 /// `face` (eq. 5 with sigma_j' above). `rho_weight_i` as in the pair terms (rho^s when submerged).
 template <int D, class NeighbourList, class Kernel>
@@ -106,23 +125,16 @@ sph::Vec<D> mirror_stress_divergence_acceleration(const NeighbourList& nl, const
                                                   double rho_weight_i, const sph::Vec<D>& gravity,
                                                   const MirrorFace<D>& face) {
   using Vec = sph::Vec<D>;
-  const double support = kernel.support();
   const Eigen::Matrix3d& sigma_i = P.stress[i];
   Vec acc = Vec::Zero();
-  // x_i - x_j' = x_ij + 2 height_j n, height_j = distance_i - n . x_ij (x_ij = x_i - x_j)
-  const auto add_image = [&](std::int64_t j, const Vec& x_ij) {
-    const double height_j = face.distance - face.normal.dot(x_ij);
-    if (height_j <= 0.0) return;  // not on i's side of the face (a thin wall's other side)
-    const Vec x_image = x_ij + (2.0 * height_j) * face.normal;
-    const double r = x_image.norm();
-    if (r >= support) return;
-    const Eigen::Matrix3d sigma_image =
-        mirrored_stress<D>(P.stress[j], P.weight_ratio[j] * P.density[j], gravity, face, height_j);
-    acc += stress_divergence_acceleration<D>(P.mass[j], sigma_i, sigma_image, rho_weight_i,
-                                             P.density[j], Vec(kernel.grad_factor(r) * x_image));
-  };
-  add_image(i, Vec::Zero());
-  for (auto it = nl.begin(i); it != nl.mid(i); ++it) add_image(it->b, it->x_ab);
+  visit_images<D>(nl, kernel.support(), i, face,
+                  [&](std::int64_t j, double height_j, const Vec& x_image, double r) {
+                    const Eigen::Matrix3d sigma_image = mirrored_stress<D>(
+                        P.stress[j], P.weight_ratio[j] * P.density[j], gravity, face, height_j);
+                    acc += stress_divergence_acceleration<D>(P.mass[j], sigma_i, sigma_image,
+                                                             rho_weight_i, P.density[j],
+                                                             Vec(kernel.grad_factor(r) * x_image));
+                  });
   return acc;
 }
 
@@ -134,23 +146,16 @@ void add_mirror_kinematics(const NeighbourList& nl, const Kernel& kernel, std::i
                            const SoilParticles<D>& P, const MirrorFace<D>& face, MatD<D>& grad_v,
                            double& divergence) {
   using Vec = sph::Vec<D>;
-  const double support = kernel.support();
   const Vec& v_i = P.velocity[i];
-  const auto add_image = [&](std::int64_t j, const Vec& x_ij) {
-    const double height_j = face.distance - face.normal.dot(x_ij);
-    if (height_j <= 0.0) return;
-    const Vec x_image = x_ij + (2.0 * height_j) * face.normal;
-    const double r = x_image.norm();
-    if (r >= support) return;
-    const Vec& v_j = P.velocity[j];
-    const Vec v_image = v_j - (2.0 * (v_j - face.velocity).dot(face.normal)) * face.normal;
-    const Vec grad_w = kernel.grad_factor(r) * x_image;
-    const double volume_j = P.mass[j] / P.density[j];
-    accumulate_velocity_gradient<D>(grad_v, volume_j, Vec(v_image - v_i), grad_w);
-    divergence += volume_j * (v_i - v_image).dot(grad_w);
-  };
-  add_image(i, Vec::Zero());
-  for (auto it = nl.begin(i); it != nl.mid(i); ++it) add_image(it->b, it->x_ab);
+  visit_images<D>(
+      nl, kernel.support(), i, face, [&](std::int64_t j, double, const Vec& x_image, double r) {
+        const Vec& v_j = P.velocity[j];
+        const Vec v_image = v_j - (2.0 * (v_j - face.velocity).dot(face.normal)) * face.normal;
+        const Vec grad_w = kernel.grad_factor(r) * x_image;
+        const double volume_j = P.mass[j] / P.density[j];
+        accumulate_velocity_gradient<D>(grad_v, volume_j, Vec(v_image - v_i), grad_w);
+        divergence += volume_j * (v_i - v_image).dot(grad_w);
+      });
 }
 
 }  // namespace porosph::soil
