@@ -6,7 +6,6 @@
 
 #include "soil_solver/artificial_stress.h"
 #include "soil_solver/soil_artificial_viscosity.h"
-#include "soil_solver/straight_walls.h"
 #include "soil_solver/stress_divergence.h"
 #include "soil_solver/velocity_gradient.h"
 #include "soil_solver/wall_mirror.h"
@@ -44,12 +43,7 @@ SoilRateSummary acceleration_loop(const sph::NeighbourList<D>& nl, const Kernel&
     // books (soil_impulse_book.h).
     const double r_i = P.weight_ratio[i];
     Vec acc_mixed = Vec::Zero();
-    Vec wall_plane_normal = Vec::Zero();
-    const bool straight_wall =
-        sees_one_straight_wall<D>(nl, i, P.wall_normal, P.straight_wall, wall_plane_normal);
-    MirrorFace<D> face;
-    const bool images = straight_wall && prm.wall_images &&
-                        find_mirror_face<D>(nl, i, P, prm.dp, wall_plane_normal, face);
+    const WallView<D> walls = view_walls<D>(nl, i, P, prm.dp, prm.wall_images);
     auto pair_terms = [&](const auto& pair, const Vec& v_j, bool fixed_j) {
       const auto add = [&](const Vec& term) {
         acc += term;
@@ -62,11 +56,11 @@ SoilRateSummary acceleration_loop(const sph::NeighbourList<D>& nl, const Kernel&
       };
       const std::int32_t j = pair.b;
       const Vec grad_w = kernel.grad_factor(pair.r) * pair.x_ab;
-      if (fixed_j && images) {
+      if (fixed_j && walls.images) {
         // eq. 5 against this wall comes from the images below
-      } else if (fixed_j && straight_wall) {
+      } else if (fixed_j && walls.straight) {
         add(wall_stress_divergence_acceleration<D>(P.mass[j], sigma_i, P.stress[j], rho_weight_i,
-                                                   P.density[j], grad_w, wall_plane_normal));
+                                                   P.density[j], grad_w, walls.plane_normal));
       } else {
         add(stress_divergence_acceleration<D>(P.mass[j], sigma_i, P.stress[j], rho_weight_i,
                                               P.density[j], grad_w));
@@ -85,9 +79,9 @@ SoilRateSummary acceleration_loop(const sph::NeighbourList<D>& nl, const Kernel&
     };
     for (auto it = nl.begin(i); it != nl.mid(i); ++it) pair_terms(*it, P.velocity[it->b], false);
     for (auto it = nl.mid(i); it != nl.end(i); ++it) pair_terms(*it, P.wall_velocity[it->b], true);
-    if (images) {
+    if (walls.images) {
       const Vec from_images =
-          mirror_stress_divergence_acceleration<D>(nl, kernel, i, P, rho_weight_i, g, face);
+          mirror_stress_divergence_acceleration<D>(nl, kernel, i, P, rho_weight_i, g, walls.face);
       acc += from_images;
       acc_wall += from_images;
     }
@@ -145,12 +139,7 @@ void compute_soil_kinematics(const sph::NeighbourList<D>& nl, const Kernel& kern
   const std::int64_t n = static_cast<std::int64_t>(P.n_free);
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::int64_t i = 0; i < n; ++i) {
-    Vec wall_plane_normal = Vec::Zero();
-    MirrorFace<D> face;
-    const bool images =
-        prm.wall_images &&
-        sees_one_straight_wall<D>(nl, i, P.wall_normal, P.straight_wall, wall_plane_normal) &&
-        find_mirror_face<D>(nl, i, P, prm.dp, wall_plane_normal, face);
+    const WallView<D> walls = view_walls<D>(nl, i, P, prm.dp, prm.wall_images);
     const Vec v_i = P.velocity[i];
     Mat grad_v = Mat::Zero();
     double divergence = 0.0;
@@ -161,8 +150,9 @@ void compute_soil_kinematics(const sph::NeighbourList<D>& nl, const Kernel& kern
       accumulate_velocity_gradient<D>(grad_v, volume_j, Vec(P.velocity[j] - v_i), grad_w);
       divergence += volume_j * (v_i - P.velocity[j]).dot(grad_w);
     }
-    if (images) add_mirror_kinematics<D>(nl, kernel, i, P, face, grad_v, divergence);
-    for (auto it = nl.mid(i); it != nl.end(i) && !images; ++it) {  // fixed: own v in continuity
+    if (walls.images) add_mirror_kinematics<D>(nl, kernel, i, P, walls.face, grad_v, divergence);
+    for (auto it = nl.mid(i); it != nl.end(i) && !walls.images;
+         ++it) {  // fixed: own v in continuity
       const std::int32_t w = it->b;
       const Vec grad_w = kernel.grad_factor(it->r) * it->x_ab;
       const double volume_w = P.mass[w] / P.density[w];

@@ -48,6 +48,7 @@
 #include <cstdint>
 
 #include "soil_solver/soil_particles.h"
+#include "soil_solver/straight_walls.h"
 #include "soil_solver/stress_divergence.h"
 #include "soil_solver/velocity_gradient.h"
 #include "sph/vector.h"
@@ -60,6 +61,7 @@ struct MirrorFace {
   sph::Vec<D> normal;    ///< unit normal of the face, from the wall into the soil
   double distance = 0;   ///< distance of i from the face along the normal [m]
   sph::Vec<D> velocity;  ///< the wall's own velocity (of its particle nearest to i)
+  Eigen::Matrix3d reflection = Eigen::Matrix3d::Identity();  ///< R = I - 2 n n, embedded in 3D
 };
 
 /// Finds the face of the one straight wall free particle i sees (`axis_normal` from
@@ -83,7 +85,30 @@ bool find_mirror_face(const NeighbourList& nl, std::int64_t i, const SoilParticl
   if (side == 0) return false;
   face.normal = static_cast<double>(side) * axis_normal;
   face.distance = nearest - 0.5 * dp;
+  const Eigen::Vector3d n3 = embed_in_3d<D>(face.normal);
+  face.reflection = Eigen::Matrix3d::Identity() - 2.0 * n3 * n3.transpose();
   return face.distance > 0.0;
+}
+
+/// How free particle i sees its fixed neighbours in eq. 5 and the kinematics: through the images
+/// of `face` (wall_mirror.h), through the wall form of one straight wall (`straight`, normal
+/// `plane_normal`; stress_divergence.h), or, when neither, as plain wall particles.
+template <int D>
+struct WallView {
+  bool straight = false, images = false;
+  sph::Vec<D> plane_normal = sph::Vec<D>::Zero();
+  MirrorFace<D> face;
+};
+
+template <int D, class NeighbourList>
+WallView<D> view_walls(const NeighbourList& nl, std::int64_t i, const SoilParticles<D>& P,
+                       double dp, bool images_on) {
+  WallView<D> view;
+  view.straight =
+      sees_one_straight_wall<D>(nl, i, P.wall_normal, P.straight_wall, view.plane_normal);
+  view.images =
+      view.straight && images_on && find_mirror_face<D>(nl, i, P, dp, view.plane_normal, view.face);
+  return view;
 }
 
 /// sigma_j' of the file comment: the image of a free particle's stress across the face.
@@ -93,9 +118,7 @@ inline Eigen::Matrix3d mirrored_stress(const Eigen::Matrix3d& sigma_j, double rh
                                        double height_j) {
   // r_j rho_j g . (x_j' - x_j), x_j' - x_j = -2 height_j n, height_j = (x_j - x_f) . n
   const double weight = rho_weight_j * gravity.dot((-2.0 * height_j) * face.normal);
-  const Eigen::Vector3d n3 = embed_in_3d<D>(face.normal);
-  const Eigen::Matrix3d mirror = Eigen::Matrix3d::Identity() - 2.0 * n3 * n3.transpose();
-  return mirror * sigma_j * mirror - weight * Eigen::Matrix3d::Identity();
+  return face.reflection * sigma_j * face.reflection - weight * Eigen::Matrix3d::Identity();
 }
 
 /// Calls visit(j, height_j, x_image, r) for the image of i itself and of each free neighbour j of

@@ -313,10 +313,8 @@ int main(int argc, char** argv) {
                          "write the phreatic line (x, SPH, Baiocchi, exact) as CSV to this file");
   auto* column = app.add_subcommand("soil_column", "dry soil column: vertical stress, K0");
   column->add_option("run_dir", run_dir)->required();
-  // Two rows of the coarsest level of the study (dp 20 mm): the same material at every dp.
-  double column_band = 0.04;
-  column->add_option("--band", column_band,
-                     "excluded below the top and above the base [m] (besides two rows)");
+  double column_band = 0.04;  // two rows of the study's coarsest level, dp 20 mm
+  column->add_option("--band", column_band, "excluded below the top and above the base [m]");
   auto* collapse = app.add_subcommand("granular_collapse", "run-out, height, failure angle");
   collapse->add_option("run_dir", run_dir)->required();
   auto* darcy = app.add_subcommand("darcy_column", "steady seepage velocity vs the seepage law");
@@ -361,7 +359,8 @@ int main(int argc, char** argv) {
       return report_fluidized_bed(porosph::validation::check_fluidized_bed(run_dir, window));
     }
     if (*darcy) return report_darcy_column(porosph::validation::check_darcy_column(run_dir));
-    if (*column) return report_soil_column(porosph::validation::check_soil_column(run_dir, column_band));
+    if (*column)
+      return report_soil_column(porosph::validation::check_soil_column(run_dir, column_band));
     if (*collapse) return report_collapse(porosph::validation::measure_collapse(run_dir));
     if (*dam) {
       const auto c = porosph::validation::compare_dam_break(run_dir, reference);
