@@ -8,6 +8,7 @@
 
 #include "fluid_solver/artificial_viscosity.h"
 #include "fluid_solver/equation_of_state.h"
+#include "fluid_solver/wall_normal_damping.h"
 #include "scene/choice.h"
 #include "scene/scene.h"
 #include "scene/term_registry.h"
@@ -24,10 +25,11 @@ struct WaterParams : sph::ParticleSpacing {  // dp, h, volume
   ArtificialViscosity artificial;            ///< Monaghan 1992 (alpha = beta = 0: off)
   double eta2 = 0.0;                         ///< 0.01 h^2, regularisation of 1/r terms
   sph::Vec<D> gravity = sph::Vec<D>::Zero();
-  bool no_slip = true;              ///< walls: mirrored velocity in viscous terms; false: excluded
-  bool artificial_at_walls = true;  ///< the Monaghan term also at no-slip walls
-  int density_filter_every = 0;     ///< Shepard filter period in steps (0: off)
-  double density_diffusion = 0.0;   ///< delta of the density diffusion term (0: off)
+  bool no_slip = true;  ///< walls: mirrored velocity in viscous terms; false: excluded
+  /// the Monaghan term at no-slip walls (wall_normal_damping.h)
+  WallArtificialViscosity artificial_at_walls = WallArtificialViscosity::normal;
+  int density_filter_every = 0;    ///< Shepard filter period in steps (0: off)
+  double density_diffusion = 0.0;  ///< delta of the density diffusion term (0: off)
   /// The diffusion leaves any linear departure potential alone (density_diffusion_gradient.h);
   /// false: only still water (water.density_diffusion_correction = "hydrostatic").
   bool diffusion_linear = true;
@@ -95,7 +97,13 @@ struct WaterParams : sph::ParticleSpacing {  // dp, h, volume
     p.gravity = sph::to_vec<D>(s.run.gravity, "run.gravity");
     p.no_slip = scene::checked_choice("water.wall_condition", w.wall_condition,
                                       {"no_slip", "free_slip"}) == "no_slip";
-    p.artificial_at_walls = on("artificial_viscosity_at_walls");
+    p.artificial_at_walls =
+        on("artificial_viscosity_at_walls")
+            ? WallArtificialViscosity::full
+            : (on("artificial_viscosity_at_walls_normal") ? WallArtificialViscosity::normal
+                                                          : WallArtificialViscosity::none);
+    scene::checked_choice("water.artificial_viscosity_at_walls", w.artificial_viscosity_at_walls,
+                          {"normal", "full", "none"});
     p.density_filter_every = on("shepard_density_filter") ? w.density_filter_every : 0;
     p.density_diffusion = on("density_diffusion") ? w.density_diffusion : 0.0;
     p.diffusion_linear = w.density_diffusion_correction == "linear";

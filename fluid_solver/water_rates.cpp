@@ -47,7 +47,7 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
   const double eta2 = prm.eta2;
   const LaminarViscosityConstants laminar{prm.mu, prm.eos.rho0()};
   const ArtificialViscosity av = prm.artificial;
-  const bool av_at_walls = prm.artificial_at_walls;
+  const WallArtificialViscosity av_at_walls = prm.artificial_at_walls;
   const Vec g = prm.gravity;
   const Vec rho0_g = prm.eos.rho0() * g;  // hydrostatic_difference.h
   const bool hydrostatic_difference = prm.hydrostatic_difference_in_soil;
@@ -126,6 +126,11 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
       acc += term;
       acc_wall += term;
     };
+    Vec wall_normal = Vec::Zero();  // n_a of wall_normal_damping.h
+    if constexpr (kNoSlip && kArtificial) {
+      if (av_at_walls == WallArtificialViscosity::normal)
+        wall_normal = wall_normal_of<D>(nl, kernel, volume, a);
+    }
     for (auto it = nl.mid(a); it != nl.end(a); ++it) {
       const std::int32_t b = it->b;
       const double grad_factor = kernel.grad_factor(it->r);
@@ -143,7 +148,7 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
         add_wall_term(pressure_term);
       }
       if constexpr (kNoSlip && (kLaminar || kArtificial)) {
-        const Vec v_ab = visc_vel[a] - wall_v[b];
+        const Vec v_ab = visc_vel[a] - wall_v[b];  // mirrored: v_a - (2 v_w - <v>_w)
         const double r2 = it->r * it->r;
         const double inv_r2_eta2 = 1.0 / (r2 + eta2);
         if constexpr (kLaminar) {
@@ -152,9 +157,10 @@ RateSummary rates_loop(const sph::NeighbourList<D>& nl, const Kernel& kernel,
               laminar, LaminarPair<D>{m[b], rho_a, rho[b], inv_rho_a, inv_rho[b], factor, v_ab}));
         }
         if constexpr (kArtificial) {
-          if (av_at_walls)
-            add_wall_term(av.acceleration<D>(m[b], v_ab, it->x_ab, inv_r2_eta2, c_a, c[b], rho_a,
-                                             rho[b], grad_w, 1.0 - av_cut_weight * cut[a]));
+          if (av_at_walls != WallArtificialViscosity::none)
+            add_wall_term(av.acceleration<D>(
+                m[b], wall_damped_velocity<D>(av_at_walls, wall_normal, v_ab), it->x_ab,
+                inv_r2_eta2, c_a, c[b], rho_a, rho[b], grad_w, 1.0 - av_cut_weight * cut[a]));
         }
       }
     }

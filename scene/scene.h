@@ -139,9 +139,9 @@ struct WaterPhase {
   double taylor_green_speed = 0.0;         ///< amplitude U of the Taylor-Green field [m/s]
   double taylor_green_wavelength = 0.0;    ///< its wavelength L = 2 pi / k [m]
   std::string wall_condition = "no_slip";  ///< "no_slip" | "free_slip"
-  /// Monaghan term also between water and no-slip wall particles (mirrored velocity); false:
-  /// between water particles only, the no-slip condition from the Morris term alone
-  bool artificial_viscosity_at_walls = true;
+  /// Monaghan term between water and no-slip wall particles (fluid_solver/wall_normal_damping.h):
+  /// "normal" (on the wall-normal approach only) | "full" (also a wall friction) | "none"
+  std::string artificial_viscosity_at_walls = "normal";
   std::string solver;         ///< executable; empty: the built-in fluid_solver
   std::vector<Shape> blocks;  ///< regions filled with water at t = 0
   std::vector<InflowZone> inflows;

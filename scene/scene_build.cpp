@@ -106,7 +106,7 @@ Scene build_scene(const toml::table& root) {
     w.particle_shifting = *(*water)["particle_shifting"].value<double>();
     w.hydrostatic_initial = *(*water)["hydrostatic_initial"].value<bool>();
     w.thin_walls = text_of(*water, "thin_walls");
-    w.artificial_viscosity_at_walls = *(*water)["artificial_viscosity_at_walls"].value<bool>();
+    w.artificial_viscosity_at_walls = text_of(*water, "artificial_viscosity_at_walls");
     w.initial_velocity = text_of(*water, "initial_velocity");
     w.taylor_green_speed = (*water)["taylor_green_speed"].value<double>().value_or(0.0);
     w.taylor_green_wavelength = (*water)["taylor_green_wavelength"].value<double>().value_or(0.0);

@@ -131,22 +131,39 @@ void add_water_terms(std::vector<TermSpec>& t) {
       {}));
   t.push_back(term(
       "artificial_viscosity_at_walls",
-      "The artificial viscosity also between water and no-slip wall particles, "
-      "with the mirrored wall velocity; fluid_solver/water_rates.cpp.",
-      "artificial_viscosity, walls acting on water, water.wall_condition = "
-      "\"no_slip\" and water.artificial_viscosity_at_walls = true",
+      "The artificial viscosity between water and no-slip wall particles on the whole mirrored "
+      "velocity difference: also a wall friction that shrinks with h; "
+      "fluid_solver/wall_normal_damping.h.",
+      "artificial_viscosity, walls acting on water, water.wall_condition = \"no_slip\" and "
+      "water.artificial_viscosity_at_walls = \"full\"",
       [](const Scene& s) {
         return artificial_on(s) && has_water_walls(s) && no_slip(s) &&
-               water(s).artificial_viscosity_at_walls;
+               water(s).artificial_viscosity_at_walls == "full";
       },
-      {Key("water.artificial_viscosity_at_walls", T::Bool)
-           .fallback("true")
-           .doc("Whether the Monaghan artificial viscosity also acts between water and no-slip "
-                "wall particles (with the mirrored wall velocity). There it is a numerical wall "
-                "friction of kinematic viscosity about alpha h c / 8, hundreds of times water's, "
-                "that shrinks with h (docs/validation-studies.md, dam break, Cause 1); false: "
-                "between water particles only, and the no-slip condition comes from the physical "
-                "viscous term (water.viscosity, Adami et al. 2012) alone.")}));
+      {Key("water.artificial_viscosity_at_walls", T::String)
+           .fallback("\"normal\"")
+           .one_of({"normal", "full", "none"})
+           .doc("The Monaghan artificial viscosity between water and no-slip wall particles "
+                "(fluid_solver/wall_normal_damping.h). \"normal\": on the wall-normal part of "
+                "the velocity difference only, so it keeps water off a wall it approaches but "
+                "does not brake a flow along it; the no-slip shear comes from the physical "
+                "viscous term (water.viscosity, Adami et al. 2012). \"full\" (the default "
+                "until 2026-12-07): on the whole mirrored velocity difference, which is also a "
+                "wall friction of kinematic viscosity about alpha h c / 8, hundreds of times "
+                "water's, that shrinks with h, so a flow along a wall does not converge under "
+                "refinement (docs/validation-studies.md, dam break). \"none\": not at walls "
+                "(a particle in the corner of a one-layer wall can then cross it).")}));
+  t.push_back(
+      term("artificial_viscosity_at_walls_normal",
+           "The artificial viscosity between water and no-slip wall particles on the wall-normal "
+           "approach only; fluid_solver/wall_normal_damping.h.",
+           "artificial_viscosity, walls acting on water, water.wall_condition = \"no_slip\" and "
+           "water.artificial_viscosity_at_walls = \"normal\"",
+           [](const Scene& s) {
+             return artificial_on(s) && has_water_walls(s) && no_slip(s) &&
+                    water(s).artificial_viscosity_at_walls == "normal";
+           },
+           {}));
   t.push_back(term(
       "pressure_gradient_hydrostatic_difference_in_soil",
       "Inside soil, the difference form of the departure from still water plus "

@@ -80,10 +80,13 @@ double free_mass(const WaterParticles<2>& P) {
 
 TEST(Reservoirs, HoldLevelWhileTheTankDrainsAndBookTheMass) {
   // Over 0.6 s, every 200 steps: the mean surface of the reservoir's 20 columns within dp/2 of
-  // the level (measured: 3.1 mm at worst, dp = 10 mm), each column's within [level - 2 dp,
+  // the level (measured: 2.9 mm at worst, dp = 10 mm), each column's within [level - 4 dp,
   // level + dp/2 + 1 mm] (the column at the box's face towards the drain, whose particles drift
-  // out of the box sideways, dips to 1.55 dp below); the water's mass equals initial + inflow -
-  // outflow to 1e-12 relative (measured 7.6e-15); the reservoir fed the drain (21 of 50 kg/m).
+  // out of the box sideways, dips to 3.15 dp below at 0.22 s, a middle one to 2.6 dp late in the
+  // run: the surface's waves; with the walls' artificial viscosity on the whole velocity, "full",
+  // the floor's friction slowed the drain to 49.8 kg/m and the dip was 1.55 dp); the water's mass
+  // equals initial + inflow - outflow to 1e-12 relative (measured 2.2e-14); the reservoir fed the
+  // drain (23 of 53 kg/m).
   const scene::Scene s = drained_tank();
   WaterSolver<2> f(s);
   const double initial = free_mass(f.particles());
@@ -97,10 +100,11 @@ TEST(Reservoirs, HoldLevelWhileTheTankDrainsAndBookTheMass) {
     if (f.step() % 200 != 0) continue;
     const std::vector<double> surface = f.reservoirs().column_surfaces(0, f.particles());
     double mean = 0.0;
-    for (double top : surface) {
+    for (std::size_t k = 0; k < surface.size(); ++k) {
+      const double top = surface[k];
       ASSERT_TRUE(std::isfinite(top));
       EXPECT_LT(top, level + 0.5 * dp + 1e-3) << "t = " << f.time();
-      EXPECT_GT(top, level - 2.0 * dp) << "t = " << f.time();
+      EXPECT_GT(top, level - 4.0 * dp) << "t = " << f.time() << " column " << k;
       mean += top / static_cast<double>(surface.size());
     }
     worst_mean = std::max(worst_mean, std::abs(mean - level));

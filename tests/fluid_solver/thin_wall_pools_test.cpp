@@ -40,7 +40,8 @@ LowPool run_pools(int layers, const std::string& thin_walls) {
     f.advance(f.dt_limits().min());
   }
   // No particle crossed a thin wall (sph/occluder_crossing.h would name it and stop the run).
-  EXPECT_FALSE(f.find_non_finite(nullptr).has_value()) << layers << " layers, " << thin_walls;
+  EXPECT_FALSE(f.find_non_finite(nullptr).has_value())
+      << layers << " layers, " << thin_walls << " " << f.find_non_finite(nullptr).value_or("");
   const auto& P = f.particles();
   LowPool out;
   int beside = 0, column = 0;

@@ -70,9 +70,10 @@ TEST(TermRegistry, SwitchesFollowTheScene) {
   const auto terms = active_terms(defaults, "water");
   for (const char* name :
        {"continuity", "pressure_gradient", "gravity", "morris_viscosity", "artificial_viscosity",
-        "artificial_viscosity_at_walls", "density_diffusion", "walls_no_slip"})
+        "artificial_viscosity_at_walls_normal", "density_diffusion", "walls_no_slip"})
     EXPECT_TRUE(has(terms, name)) << name;
   EXPECT_FALSE(has(terms, "walls_free_slip"));
+  EXPECT_FALSE(has(terms, "artificial_viscosity_at_walls"));  // "full" is opt-in (docs/terms.md)
   EXPECT_FALSE(has(terms, "periodic"));
   EXPECT_TRUE(active_terms(defaults, "soil").empty());         // no soil in the scene
   EXPECT_TRUE(active_terms(defaults, "interaction").empty());  // nothing to exchange
@@ -82,15 +83,21 @@ TEST(TermRegistry, SwitchesFollowTheScene) {
                       {"water.viscosity=0", "water.alpha=0", "water.density_diffusion=0",
                        "water.wall_condition=\"free_slip\""});
   const auto fewer = active_terms(off, "water");
-  for (const char* name : {"morris_viscosity", "artificial_viscosity",
-                           "artificial_viscosity_at_walls", "density_diffusion", "walls_no_slip"})
+  for (const char* name :
+       {"morris_viscosity", "artificial_viscosity", "artificial_viscosity_at_walls",
+        "artificial_viscosity_at_walls_normal", "density_diffusion", "walls_no_slip"})
     EXPECT_FALSE(has(fewer, name)) << name;
   EXPECT_TRUE(has(fewer, "walls_free_slip"));
 
-  const Scene no_wall_av =
-      load_scene_text(kWaterColumn2D, "column.toml", {"water.artificial_viscosity_at_walls=false"});
-  EXPECT_FALSE(has(active_terms(no_wall_av, "water"), "artificial_viscosity_at_walls"));
-  EXPECT_TRUE(has(active_terms(no_wall_av, "water"), "artificial_viscosity"));
+  const Scene full = load_scene_text(kWaterColumn2D, "column.toml",
+                                     {"water.artificial_viscosity_at_walls=\"full\""});
+  EXPECT_TRUE(has(active_terms(full, "water"), "artificial_viscosity_at_walls"));
+  EXPECT_FALSE(has(active_terms(full, "water"), "artificial_viscosity_at_walls_normal"));
+  const Scene none = load_scene_text(kWaterColumn2D, "column.toml",
+                                     {"water.artificial_viscosity_at_walls=\"none\""});
+  EXPECT_FALSE(has(active_terms(none, "water"), "artificial_viscosity_at_walls"));
+  EXPECT_FALSE(has(active_terms(none, "water"), "artificial_viscosity_at_walls_normal"));
+  EXPECT_TRUE(has(active_terms(none, "water"), "artificial_viscosity"));
 }
 
 TEST(TermRegistry, TheCoupledBedExchangesItsSeepageLaw) {

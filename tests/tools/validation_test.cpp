@@ -5,7 +5,7 @@
 
 #include "sph/kernels.h"
 #include "tests/support/process_support.h"
-#include "tools/validation/case_checks.h"
+#include "tools/validation/dam_break_check.h"
 #include "tools/validation/dam_case_checks.h"
 #include "tools/validation/lattice_registry.h"
 #include "tools/validation/run_directory.h"
@@ -37,12 +37,41 @@ TEST(Validation, DamBreakErrorOfAKnownFront) {
   }
   write_text(dir + "/timeseries.csv", csv);
   const std::string reference = write_text(dir + "/reference.csv", "T,Z\n1.0,1.6\n2.0,1.8\n");
-  const auto c = validation::compare_dam_break(dir, reference);
+  const auto c =
+      validation::compare_dam_break(dir, reference, validation::DamBreakFront::farthest_particle);
   ASSERT_EQ(c.T.size(), 2u);
   // Z_sim(1) = 1.5 -> |dZ| = 0.1; Z_sim(2) = 2.0 -> |dZ| = 0.2 (to the csv's 6 printed digits).
   EXPECT_NEAR(c.Z_simulated[0], 1.5, 1e-4);
   EXPECT_NEAR(c.mean_abs_error, 0.15, 1e-4);
   EXPECT_NEAR(c.max_abs_error, 0.2, 1e-4);
+}
+
+// The bulk front skips a film thinner than the capillary length: dp = 1 mm, a column 3 particles
+// deep over x = 0 .. 5 mm, a one-particle film to 8 mm, then three particles stacked in the column
+// 9 .. 10 mm (deep enough again) and a fixed (wall) particle column far out that must not count.
+TEST(Validation, DamBreakBulkFrontIsTheFarthestColumnAsDeepAsTheCapillaryLength) {
+  const double dp = 0.001;
+  std::vector<double> position;
+  std::vector<std::uint8_t> fixed;
+  auto add = [&](double x, double y, bool wall) {
+    position.insert(position.end(), {x, y});
+    fixed.push_back(wall);
+  };
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 3; ++j) add((i + 0.5) * dp, (j + 0.5) * dp, false);
+  for (int i = 5; i < 8; ++i) add((i + 0.5) * dp, 0.5 * dp, false);
+  std::vector<double> depth;
+  const double lc = validation::kCapillaryLengthOfWater;
+  EXPECT_DOUBLE_EQ(validation::bulk_front(position, fixed, 0.0, dp, lc, depth), 5 * dp);
+  for (int j = 0; j < 4; ++j) add(20.5 * dp, (j + 0.5) * dp, true);
+  EXPECT_DOUBLE_EQ(validation::bulk_front(position, fixed, 0.0, dp, lc, depth), 5 * dp);
+  for (int j = 0; j < 3; ++j) add(9.5 * dp, (j + 0.5) * dp, false);
+  EXPECT_DOUBLE_EQ(validation::bulk_front(position, fixed, 0.0, dp, lc, depth), 10 * dp);
+  // Measured from the back wall: the same water shifted by x_wall gives the same front.
+  for (std::size_t i = 0; i < fixed.size(); ++i) position[2 * i] += 0.25;
+  EXPECT_DOUBLE_EQ(validation::bulk_front(position, fixed, 0.25, dp, lc, depth), 10 * dp);
+  // One particle deep is enough where dp itself reaches the capillary length.
+  EXPECT_DOUBLE_EQ(validation::bulk_front(position, fixed, 0.25, dp, dp, depth), 10 * dp);
 }
 
 // B of the rockfill shell: toe at x = 1.7, crest end at 0.2. Particles: one that moved 30 mm from

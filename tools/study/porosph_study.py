@@ -28,7 +28,10 @@ one level to the next (or a level has no error); arithmetic in tools/study/conve
 --quantity TEXT (either mode) takes the error from the summary line whose quantity contains TEXT
 (case-insensitive) instead of the first one, e.g. --quantity "max speed". --error-from value takes
 |value - reference| (first number of each column) instead of the error column, whose rounding
-(e.g. "0.02 %") can hide a change between levels.
+(e.g. "0.02 %") can hide a change between levels. --error-from change (--converge only, three or
+more levels) takes the change of the value from the next coarser level, |Q_i - Q_{i-1}|: the
+self-convergence of a quantity whose reference is missing or carries an error of its own (the
+dam break's release); the order is that of the changes and Richardson extrapolates the value.
 """
 import argparse
 import csv
@@ -177,8 +180,16 @@ def converge(args):
     dps = [float(v) for v in levels]
     # Richardson applies to a measured quantity, not to a value that is the error itself
     values = [math.nan if r.get("value") == r.get("error") else r["value_numeric"] for r in rows]
+    first = 0
+    if args.error_from == "change":  # self-convergence: |Q_i - Q_{i-1}|, none at the coarsest
+        if len(rows) < 3:
+            raise SystemExit("porosph_study: --error-from change needs three or more levels")
+        for i, row in enumerate(rows):
+            row["error_value"] = abs(values[i] - values[i - 1]) if i > 0 else math.nan
+        first = 1
     orders, extrapolated, verdict, passed = convergence.analyse(
-        dps, [r["error_value"] for r in rows], values)
+        dps[first:], [r["error_value"] for r in rows[first:]], values[first:])
+    orders, extrapolated = [math.nan] * first + orders, [math.nan] * first + extrapolated
     for row, p, q in zip(rows, orders, extrapolated):
         row.update(observed_order=p, richardson_value=q, convergence_verdict=verdict)
     columns = ["level", key, "status", "particles", "steps", "wall_seconds", "quantity", "value",
@@ -187,8 +198,8 @@ def converge(args):
     convergence.write_csv(rows, columns, os.path.join(args.out, "convergence.csv"))
     quantity = next((r["quantity"] for r in rows if r.get("quantity")), "error")
     if not args.no_plot:
-        ylabel = ("|value - reference|" if args.error_from == "value"
-                  else "error (summary's error column)")
+        ylabel = {"value": "|value - reference|", "change": "|value - coarser level's|"}.get(
+            args.error_from, "error (summary's error column)")
         convergence.plot(dps, [r["error_value"] for r in rows], orders, args.expected_order,
                          f"{args.check}: {quantity}\n{verdict}", ylabel,
                          os.path.join(args.out, "convergence.png"))
@@ -216,8 +227,9 @@ def main():
     parser.add_argument("--expected-order", type=float, default=2.0,
                         help="slope of the reference line in convergence.png (default 2)")
     parser.add_argument("--quantity", help="pick the summary line whose quantity contains this")
-    parser.add_argument("--error-from", choices=["column", "value"], default="column",
-                        help="error = the summary's error column (default) or |value - reference|")
+    parser.add_argument("--error-from", choices=["column", "value", "change"], default="column",
+                        help="error = the summary's error column (default), |value - reference| "
+                        "or (--converge) |value - the coarser level's value|")
     parser.add_argument("--set", dest="fixed", action="append", default=[],
                         help="KEY=VALUE for every variant")
     parser.add_argument("--out", required=True)

@@ -21,13 +21,14 @@
 #include <cstdio>
 #include <fstream>
 
-#include "tools/validation/case_checks.h"
 #include "tools/validation/consolidation_report.h"
+#include "tools/validation/dam_break_check.h"
 #include "tools/validation/dam_case_checks.h"
 #include "tools/validation/fluidized_bed_check.h"
 #include "tools/validation/mandel_check.h"
 #include "tools/validation/seepage_checks.h"
 #include "tools/validation/soil_checks.h"
+#include "tools/validation/summary_line.h"
 #include "tools/validation/verification_report.h"
 
 #ifndef POROSPH_SOURCE_DIR
@@ -36,21 +37,8 @@
 
 namespace {
 
-/// One machine-readable line per check, read by tools/validation/report.py:
-/// "summary<TAB>quantity<TAB>value<TAB>reference<TAB>error<TAB>target<TAB>met|not met|no target".
-void print_summary(const std::string& quantity, const std::string& value,
-                   const std::string& reference, const std::string& error,
-                   const std::string& target, int met) {
-  std::printf("summary\t%s\t%s\t%s\t%s\t%s\t%s\n", quantity.c_str(), value.c_str(),
-              reference.c_str(), error.c_str(), target.c_str(),
-              met < 0 ? "no target" : (met ? "met" : "not met"));
-}
-
-std::string fmt(const char* format, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, format, value);
-  return buffer;
-}
+using porosph::validation::print_summary;
+constexpr auto* fmt = &porosph::validation::format_value;
 
 int report_soil_column(const porosph::validation::SoilColumnCheck& c) {
   std::printf(
@@ -363,26 +351,11 @@ int main(int argc, char** argv) {
       return report_soil_column(porosph::validation::check_soil_column(run_dir, column_band));
     if (*collapse) return report_collapse(porosph::validation::measure_collapse(run_dir));
     if (*dam) {
-      const auto c = porosph::validation::compare_dam_break(run_dir, reference);
-      std::printf("dam_break vs Martin & Moyce (1952), a = %.5f m\n%8s %8s %8s %8s\n", c.a, "T",
-                  "Z_ref", "Z_sim", "dZ");
-      for (std::size_t i = 0; i < c.T.size(); ++i) {
-        std::printf("%8.2f %8.2f %8.3f %+8.3f\n", c.T[i], c.Z_reference[i], c.Z_simulated[i],
-                    c.Z_simulated[i] - c.Z_reference[i]);
-      }
-      std::printf("mean |dZ| = %.3f  max |dZ| = %.3f  (target: mean <= 0.10)\n", c.mean_abs_error,
-                  c.max_abs_error);
-      std::printf("diagnostic: a release delay of dT = %.2f would leave mean |dZ| = %.3f\n",
-                  c.best_shift, c.mean_abs_error_shifted);
-      std::printf(
-          "time-origin free: the late front speed dZ/dT over T >= %.1f is %.3f, the "
-          "table's %.3f (%+.1f %%)\n",
-          c.kLateSpeedFrom, c.late_speed, c.late_speed_reference,
-          100.0 * (c.late_speed / c.late_speed_reference - 1.0));
-      print_summary("mean |dZ| of the surge front", fmt("%.3f", c.mean_abs_error),
-                    "Martin & Moyce (1952)", fmt("%.3f", c.mean_abs_error), "<= 0.10",
-                    c.mean_abs_error <= 0.10);
-      return c.mean_abs_error <= 0.10 ? 0 : 1;
+      using porosph::validation::DamBreakFront;
+      return porosph::validation::report_dam_break(
+          porosph::validation::compare_dam_break(run_dir, reference, DamBreakFront::bulk),
+          porosph::validation::compare_dam_break(run_dir, reference,
+                                                 DamBreakFront::farthest_particle));
     }
     if (*still_bed) return v::report_still_bed(v::check_still_bed(run_dir));
     if (*weir) return v::report_seepage_weir(v::check_seepage_weir(run_dir, weir_window));

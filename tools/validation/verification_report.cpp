@@ -5,23 +5,13 @@
 #include <cstdio>
 #include <string>
 
+#include "tools/validation/summary_line.h"
+
 namespace porosph::validation {
 namespace {
 
-/// "summary<TAB>quantity<TAB>value<TAB>reference<TAB>error<TAB>target<TAB>met|not met".
-/// met: 1 met, 0 not met, -1 no target (a figure reported beside the verdict).
-void summary(const std::string& quantity, const std::string& value, const std::string& reference,
-             const std::string& error, const std::string& target, int met) {
-  std::printf("summary\t%s\t%s\t%s\t%s\t%s\t%s\n", quantity.c_str(), value.c_str(),
-              reference.c_str(), error.c_str(), target.c_str(),
-              met < 0 ? "no target" : (met ? "met" : "not met"));
-}
-
-std::string fmt(const char* format, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, format, value);
-  return buffer;
-}
+constexpr auto* summary = &print_summary;
+constexpr auto* fmt = &format_value;
 
 }  // namespace
 
