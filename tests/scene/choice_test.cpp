@@ -1,10 +1,10 @@
 // scene::checked_choice: the value when allowed, else an error naming the key and the values.
+#include "scene/choice.h"
+
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 #include <string>
-
-#include "scene/choice.h"
 
 namespace porosph::scene {
 namespace {

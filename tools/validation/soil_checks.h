@@ -19,11 +19,11 @@ namespace porosph::validation {
 /// exact stress is 2.5 dp rho g, does not fall with dp (it is reported apart).
 struct SoilColumnCheck {
   double time = 0;
-  double averaged_from = 0;             ///< [s] first snapshot of the average (= time: last only)
-  std::size_t snapshots = 0;            ///< in the average
-  double band = 0;                      ///< [m] excluded at the top and the base
-  std::size_t particles = 0;            ///< free particles checked
-  double max_rel_error = 0;             ///< per particle, max |sigma_v - exact| / |exact|
+  double averaged_from = 0;   ///< [s] first snapshot of the average (= time: last only)
+  std::size_t snapshots = 0;  ///< in the average
+  double band = 0;            ///< [m] excluded at the top and the base
+  std::size_t particles = 0;  ///< free particles checked
+  double max_rel_error = 0;   ///< per particle, max |sigma_v - exact| / |exact|
   /// The same over the particles below the top two rows and above the bottom two (the free top's
   /// and the floor's particle layers), for information.
   double max_rel_error_two_rows = 0;
