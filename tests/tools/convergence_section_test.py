@@ -42,6 +42,19 @@ class ConvergenceSection(unittest.TestCase):
         self.assertIn("**ERROR GROWS WITH REFINEMENT - verdict fails**", line)
         self.assertIn("5 / 42 / 323 s", line)
 
+    def test_a_self_convergence_row_shows_the_values_and_their_changes(self):
+        runs = tempfile.mkdtemp(prefix="porosph-conv-")
+        front = next(s for s in cs.STUDIES if s["name"] == "dam_break_front")
+        lines = ["0,0.0028575,completed,1,1,3.1,mean Z,2.7654,-,-,,,,-,no target,V",
+                 "1,0.00142875,completed,1,1,22.5,mean Z,2.8165,-,-,0.0511,,,-,no target,V",
+                 "2,0.000714375,completed,1,1,298.8,mean Z,2.8019,-,-,0.0146,1.807,2.79606,-,"
+                 "no target,V"]
+        write_study(runs, front, lines, "error falls with refinement")
+        line = cs.row(front, runs)
+        self.assertIn("value 2.7654 / 2.8165 / 2.8019; change - / 0.0511 / 0.0146", line)
+        self.assertIn("| 1.81 | 2.79606 | error falls with refinement |", line)
+        self.assertIn("--error-from change", cs.shell_line(front))
+
     def test_a_study_whose_runs_are_gone_keeps_the_earlier_row(self):
         runs = tempfile.mkdtemp(prefix="porosph-conv-")
         earlier = ("| soil_column | sigma_v error | 0.02 / 0.01 / 0.005 | 1.2 / 1.1 / 1.0 % "

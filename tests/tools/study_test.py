@@ -178,6 +178,27 @@ class ConvergenceMode(unittest.TestCase):
             self.assertAlmostEqual(float(r["observed_order"]), 2.0, places=4)
             self.assertAlmostEqual(float(r["richardson_value"]), 2.0, places=6)
 
+    def test_change_mode_judges_the_self_convergence_of_the_value(self):
+        # q = 2 + 40 dp^2: changes 0.012 and 0.003 from the coarser level, order 2, limit 2
+        result, out = self.run_stub("falls", "--quantity", "speed", "--error-from", "change")
+        self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+        rows = read_table(out)
+        self.assertEqual(rows[0]["error_value"], "")  # no coarser level to change from
+        self.assertAlmostEqual(float(rows[1]["error_value"]), 0.012, places=9)
+        self.assertAlmostEqual(float(rows[2]["error_value"]), 0.003, places=9)
+        self.assertEqual(rows[1]["observed_order"], "")  # one change has no order yet
+        self.assertAlmostEqual(float(rows[2]["observed_order"]), 2.0, places=6)
+        self.assertAlmostEqual(float(rows[2]["richardson_value"]), 2.0, places=6)
+        self.assertEqual(rows[2]["convergence_verdict"], convergence.FALLS)
+        # two levels cannot show a change of the change
+        out2 = tempfile.mkdtemp(prefix="porosph-converge-stub-")
+        two = subprocess.run(
+            [sys.executable, TOOL, SCENE, "--check", "any", "--converge", "run.dp=0.02,0.01",
+             "--out", out2, "--bin", self.stub_bin(), "--error-from", "change"],
+            capture_output=True, text=True, env=dict(os.environ, STUB_MODE="falls"))
+        self.assertNotEqual(two.returncode, 0)
+        self.assertIn("three or more levels", two.stderr)
+
     def test_unknown_quantity_names_the_available_ones_and_fails(self):
         result, _ = self.run_stub("falls", "--quantity", "nothing like it")
         self.assertEqual(result.returncode, 1)
