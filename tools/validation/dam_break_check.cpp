@@ -42,7 +42,7 @@ double bulk_front(const std::vector<double>& position, const std::vector<std::ui
   depth.assign(depth.size(), 0.0);
   for (std::size_t i = 0; i < fixed.size(); ++i) {
     const double column = std::floor((position[2 * i] - x_wall) / dp);
-    if (fixed[i] || column < 0) continue;
+    if (fixed[i] || !(column >= 0)) continue;  // behind the back wall, or not finite
     const auto k = static_cast<std::size_t>(column);
     if (k >= depth.size()) depth.resize(k + 1, 0.0);
     depth[k] += dp;  // a particle holds dp^2 of water: dp of depth in its column
