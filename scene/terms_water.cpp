@@ -16,6 +16,11 @@ const WaterPhase& water(const Scene& s) { return *s.water; }
 bool has_water_walls(const Scene& s) { return !s.walls_acting_on("water").empty(); }
 bool artificial_on(const Scene& s) { return water(s).alpha > 0.0 || water(s).beta > 0.0; }
 bool no_slip(const Scene& s) { return water(s).wall_condition == "no_slip"; }
+/// The Monaghan term acts at no-slip walls in this mode (fluid_solver/wall_normal_damping.h).
+bool wall_artificial_viscosity_is(const Scene& s, const char* mode) {
+  return artificial_on(s) && has_water_walls(s) && no_slip(s) &&
+         water(s).artificial_viscosity_at_walls == mode;
+}
 bool any_reservoir(const Scene& s, bool open) {
   const auto& r = water(s).reservoirs;
   return std::any_of(r.begin(), r.end(),
@@ -136,10 +141,7 @@ void add_water_terms(std::vector<TermSpec>& t) {
       "fluid_solver/wall_normal_damping.h.",
       "artificial_viscosity, walls acting on water, water.wall_condition = \"no_slip\" and "
       "water.artificial_viscosity_at_walls = \"full\"",
-      [](const Scene& s) {
-        return artificial_on(s) && has_water_walls(s) && no_slip(s) &&
-               water(s).artificial_viscosity_at_walls == "full";
-      },
+      [](const Scene& s) { return wall_artificial_viscosity_is(s, "full"); },
       {Key("water.artificial_viscosity_at_walls", T::String)
            .fallback("\"normal\"")
            .one_of({"normal", "full", "none"})
@@ -159,11 +161,7 @@ void add_water_terms(std::vector<TermSpec>& t) {
            "approach only; fluid_solver/wall_normal_damping.h.",
            "artificial_viscosity, walls acting on water, water.wall_condition = \"no_slip\" and "
            "water.artificial_viscosity_at_walls = \"normal\"",
-           [](const Scene& s) {
-             return artificial_on(s) && has_water_walls(s) && no_slip(s) &&
-                    water(s).artificial_viscosity_at_walls == "normal";
-           },
-           {}));
+           [](const Scene& s) { return wall_artificial_viscosity_is(s, "normal"); }, {}));
   t.push_back(term(
       "pressure_gradient_hydrostatic_difference_in_soil",
       "Inside soil, the difference form of the departure from still water plus "

@@ -61,20 +61,9 @@ def dam_break(out, figures, name):
     g = abs(params["run"]["gravity"][1])
     dp = params["run"]["dp"]
     scale = math.sqrt(2 * g / a)
-    x_wall = block["min"][0]
-    capillary_length = 2.72e-3  # tools/validation/dam_break_check.h, the verdict's bulk front
-    times, bulk = [], []
-    with h5py.File(os.path.join(out, "water.h5"), "r") as f:
-        for key in sorted(f["snapshots"].keys()):
-            snap = f["snapshots"][key]
-            x = snap["position"][:, 0][snap["fixed"][:] == 0]
-            columns = np.floor((x - x_wall) / dp).astype(int)
-            columns = columns[columns >= 0]
-            deep = np.nonzero(np.bincount(columns) * dp >= capillary_length * (1 - 1e-9))[0]
-            times.append(snap.attrs["time"] * scale)
-            bulk.append((deep.max() + 1) * dp / a if deep.size else 0.0)
+    bulk = read_csv(os.path.join(out, "validate_series.csv"))  # porosph_validate --series
     fig, ax = plt.subplots(figsize=(5, 3.5))
-    ax.plot(times, bulk, label="PoroSPH, bulk front (judged)")
+    ax.plot(bulk["T"], bulk["Z"], label="PoroSPH, bulk front (judged)")
     ax.plot(ts["t"] * scale, (ts["front"] + dp / 2) / a, ":", label="PoroSPH, farthest particle")
     ax.plot(ref["T"], ref["Z"], "o", label="Martin & Moyce (1952)")
     ax.set_xlabel("T = t sqrt(2g/a)")

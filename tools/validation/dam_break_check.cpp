@@ -91,6 +91,8 @@ DamBreakComparison compare_dam_break(const std::string& run_dir, const std::stri
     for (double& value : z) value += 0.5 * out.dp;
   }
   for (double& value : z) value /= out.a;
+  for (double time : t) out.T_front.push_back(time * time_scale);
+  out.Z_front = z;
 
   const auto reference = read_csv(reference_csv);
   const auto& T_ref = reference.column("T");

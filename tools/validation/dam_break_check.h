@@ -38,6 +38,8 @@ struct DamBreakComparison {
   /// the simulated front and of the table (1.381 for Martin & Moyce's n^2 = 2 column).
   static constexpr double kLateSpeedFrom = 2.2;
   double late_speed = 0, late_speed_reference = 0;
+  /// The whole simulated front: T and Z at every output (bulk) or timeseries row (farthest).
+  std::vector<double> T_front, Z_front;
 };
 
 /// Compares a finished run's front with the table (T,Z); the front is interpolated linearly in time

@@ -173,7 +173,7 @@ def validate(c, args, out=None):
     out = out or run_path(c, args)
     series = os.path.join(out, "validate_series.csv")
     command = [os.path.join(args.bin, "porosph_validate"), c["check"], out] + c["extra"]
-    if c["check"] in ("rockfill_overtopping", "hydraulic_heave"):
+    if c["check"] in ("rockfill_overtopping", "hydraulic_heave", "dam_break"):
         command += ["--series", series]
     result = subprocess.run(command, capture_output=True, text=True)
     text = result.stdout + result.stderr

@@ -1,5 +1,5 @@
 // porosph_validate: compares a finished run with its case's reference and prints the error.
-//   porosph_validate dam_break RUN_DIR [--reference cases/dam_break/reference.csv]
+//   porosph_validate dam_break RUN_DIR [--reference FILE] [--series FILE]
 //   porosph_validate hydrostatic_tank RUN_DIR
 //   porosph_validate still_bed RUN_DIR
 //   porosph_validate seepage_weir RUN_DIR [--window S]
@@ -280,6 +280,8 @@ int main(int argc, char** argv) {
   auto* dam = app.add_subcommand("dam_break", "Martin & Moyce (1952) surge front");
   dam->add_option("run_dir", run_dir)->required();
   dam->add_option("--reference", reference, "reference table (T,Z)");
+  std::string dam_series;
+  dam->add_option("--series", dam_series, "write the bulk front (T, Z) as CSV to this file");
   auto* tank = app.add_subcommand("hydrostatic_tank", "still water: pressure and speed");
   tank->add_option("run_dir", run_dir)->required();
   bool print_rows = false;
@@ -352,10 +354,11 @@ int main(int argc, char** argv) {
     if (*collapse) return report_collapse(porosph::validation::measure_collapse(run_dir));
     if (*dam) {
       using porosph::validation::DamBreakFront;
+      const auto bulk = porosph::validation::compare_dam_break(run_dir, reference);
+      write_series(dam_series, {"T", "Z"}, {&bulk.T_front, &bulk.Z_front});
       return porosph::validation::report_dam_break(
-          porosph::validation::compare_dam_break(run_dir, reference, DamBreakFront::bulk),
-          porosph::validation::compare_dam_break(run_dir, reference,
-                                                 DamBreakFront::farthest_particle));
+          bulk, porosph::validation::compare_dam_break(run_dir, reference,
+                                                       DamBreakFront::farthest_particle));
     }
     if (*still_bed) return v::report_still_bed(v::check_still_bed(run_dir));
     if (*weir) return v::report_seepage_weir(v::check_seepage_weir(run_dir, weir_window));
