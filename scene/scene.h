@@ -225,6 +225,9 @@ struct SoilPhase {
   /// "images": eq. 5 against a straight wall from mirror images of the soil (wall_mirror.h) |
   /// "wall_particles": from the wall particles
   std::string wall_stress = "images";
+  /// "linear": wall particles continue each soil neighbour's stress with its gradient |
+  /// "weight": with the weight, isotropically (soil_solver/wall_stress_continuation.h)
+  std::string wall_stress_continuation = "linear";
   double damping_coefficient = 0.02;  ///< D = coefficient sqrt(E / (rho h^2))
   int stress_filter_every = 0;        ///< stress filter every N steps; 0: off
   std::string stress_filter = "mls";  ///< its weights: "shepard" | "mls"

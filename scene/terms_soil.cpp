@@ -190,6 +190,26 @@ void add_soil_terms(std::vector<TermSpec>& t) {
                "soil; wall_particles: the "
                "wall particles, whose sums change as the soil's lattice slides along them (a push "
                "off the wall and a density change that grow as dp falls; docs/soil.md, Walls).")}));
+  t.push_back(soil_term(
+      "wall_stress_linear_continuation",
+      "Wall particles take the Shepard mean of their soil neighbours' stress, each continued to "
+      "the wall particle with its own corrected gradient (first order, exact for a geostatic "
+      "state); soil_solver/wall_stress_continuation.h.",
+      "walls acting on soil, or a fixed material, and soil.wall_stress_continuation = \"linear\"",
+      [](const Scene& s) {
+        return soil(s).wall_stress_continuation == "linear" &&
+               (!s.walls_acting_on("soil").empty() ||
+                any_material(s, [](const SoilMaterial& x) { return x.fixed; }));
+      },
+      {Key("soil.wall_stress_continuation", T::String)
+           .fallback("\"linear\"")
+           .one_of({"linear", "weight"})
+           .doc("How a wall particle continues its soil neighbours' stress to its own place. "
+                "linear: sigma_f + grad sigma_f . (x_w - x_f), the gradient corrected to first "
+                "order over f's soil neighbours (where that support is too thin, the weight "
+                "form); weight: sigma_f - rho_f (g . (x_w - x_f)) I, the weight continued "
+                "isotropically, so a floor's and a corner's wall particles are compressed "
+                "sideways by (1 - K0) rho g dy too much (docs/soil.md, Walls).")}));
   t.push_back(
       soil_term("geostatic_initial_stress",
                 "At-rest initial stress from the weight above; "

@@ -59,6 +59,9 @@ struct SoilParams : sph::ParticleSpacing {  // dp, h, volume
   /// soil.wall_stress = "images": eq. 5 against a straight wall from mirror images of the soil
   /// (wall_mirror.h).
   bool wall_images = false;
+  /// soil.wall_stress_continuation = "linear": wall particles continue each soil neighbour's stress
+  /// with its gradient (wall_stress_continuation.h); false: with the weight, isotropically.
+  bool linear_wall_stress = false;
   double damping_duration = 0.0;      ///< [s]; 0: no damping stage
   double damping_coefficient = 0.02;  ///< D = coefficient sqrt(E / (rho h^2))
   double cfl = 0.2, c_a = 0.25;
@@ -96,6 +99,7 @@ struct SoilParams : sph::ParticleSpacing {  // dp, h, volume
     p.geostatic_initial = on("geostatic_initial_stress");
     p.two_sided_thin_walls = on("thin_walls_two_sided");
     p.wall_images = on("wall_images");
+    p.linear_wall_stress = on("wall_stress_linear_continuation");
     p.damping_duration = on("damping_stage") ? soil.damping_duration : 0.0;
     p.damping_coefficient = soil.damping_coefficient;
     p.cfl = s.run.cfl;

@@ -150,7 +150,7 @@ void SoilSolver<D>::compute_rates_with(const Kernel& kernel) {
   if (every > 0 && scalars_.step > 0 && scalars_.step % static_cast<std::uint64_t>(every) == 0)
     filter_soil_stress(params_.stress_filter, neighbours_, kernel, params_, particles_,
                        filter_scratch_);
-  update_soil_wall_state(neighbours_, kernel, params_, particles_);
+  update_soil_wall_state(neighbours_, kernel, params_, particles_, wall_gradient_scratch_);
   if (params_.any_artificial_stress()) update_artificial_stress(params_, particles_);
   const SoilRateSummary r = compute_soil_rates(neighbours_, kernel, params_, particles_);
   const double max_acceleration =

@@ -28,6 +28,7 @@
 #include "soil_solver/soil_params.h"
 #include "soil_solver/soil_particles.h"
 #include "soil_solver/surface_loads.h"
+#include "soil_solver/wall_stress_continuation.h"
 #include "sph/cell_order.h"
 #include "sph/damping_stage.h"
 #include "sph/domain_box.h"
@@ -128,6 +129,7 @@ class SoilSolver : public sph::ParticleSolverCore<D, SoilParticles<D>> {
   std::vector<std::pair<std::int32_t, sph::Vec<D>>> fixed_interaction_;
 
   std::vector<Eigen::Matrix3d> filter_scratch_;
+  std::vector<StressGradient<D>> wall_gradient_scratch_;  ///< soil_walls.h, linear continuation
 };
 
 extern template class SoilSolver<2>;

@@ -16,10 +16,11 @@
 // With the Shepard stress as it is, the shear locked in while a column settles hangs the soil on
 // the walls (measured: a frictionless 1 m column carried 9 % more than its weight at the bottom).
 // x_wf = x_w - x_f, tension positive (hence the minus sign: below the soil the wall is more
-// compressed by the weight of the soil between w and f). The weight correction is applied to the
-// isotropic part: it is exact for the normal stress that carries the weight onto a floor, which is
-// the component a wall particle transmits; the horizontal stress of a geostatic state grows with
-// K0 instead, a difference that acts along the wall and is balanced by the wall's own symmetry.
+// compressed by the weight of the soil between w and f). That is the "weight" continuation of
+// soil.wall_stress_continuation; "linear" (the default) continues each neighbour's stress with its
+// own gradient instead, sigma_f + grad sigma_f . x_wf, exact for a geostatic state's horizontal
+// stress too (wall_stress_continuation.h); a neighbour whose gradient is not trusted keeps the
+// weight form.
 // A fixed particle without free neighbours keeps zero stress, its reference density and v~ = v_w.
 #pragma once
 
@@ -28,17 +29,23 @@
 #include "soil_solver/soil_params.h"
 #include "soil_solver/soil_particles.h"
 #include "soil_solver/velocity_gradient.h"
+#include "soil_solver/wall_stress_continuation.h"
 #include "sph/neighbour_list.h"
 
 namespace porosph::soil {
 
+/// `gradients`: scratch for the free particles' stress gradients (used with the linear
+/// continuation; kept between calls so that it allocates once).
 template <int D, class Kernel>
 void update_soil_wall_state(const sph::NeighbourList<D>& neighbours, const Kernel& kernel,
-                            const SoilParams<D>& params, SoilParticles<D>& P) {
+                            const SoilParams<D>& params, SoilParticles<D>& P,
+                            std::vector<StressGradient<D>>& gradients) {
   using Vec = sph::Vec<D>;
   const std::int64_t n0 = static_cast<std::int64_t>(P.n_free);
   const std::int64_t n1 = static_cast<std::int64_t>(P.size());
   const Vec body = params.gravity;  // fixed particles: a_w = 0
+  const bool linear = params.linear_wall_stress;
+  if (linear) stress_gradients_next_to_walls<D>(neighbours, kernel, P, gradients);
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::int64_t w = n0; w < n1; ++w) {
     double sum_w = 0.0, sum_rho_w = 0.0;
@@ -49,7 +56,10 @@ void update_soil_wall_state(const sph::NeighbourList<D>& neighbours, const Kerne
       sum_w += kw;
       sum_rho_w += P.density[it->b] * kw;
       sum_sigma_w += kw * P.stress[it->b];
-      sum_rho_x_w += (P.density[it->b] * kw) * it->x_ab;
+      if (linear && gradients[it->b].trusted)
+        sum_sigma_w.noalias() += kw * gradients[it->b].change_over(it->x_ab);
+      else
+        sum_rho_x_w += (P.density[it->b] * kw) * it->x_ab;
       sum_v_w += kw * P.velocity[it->b];
       sum_x_w += kw * it->x_ab;
     }
