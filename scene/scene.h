@@ -227,7 +227,7 @@ struct SoilPhase {
   std::string wall_stress = "images";
   /// "linear": wall particles continue each soil neighbour's stress with its gradient |
   /// "weight": with the weight, isotropically (soil_solver/wall_stress_continuation.h)
-  std::string wall_stress_continuation = "linear";
+  std::string wall_stress_continuation = "weight";
   double damping_coefficient = 0.02;  ///< D = coefficient sqrt(E / (rho h^2))
   int stress_filter_every = 0;        ///< stress filter every N steps; 0: off
   std::string stress_filter = "mls";  ///< its weights: "shepard" | "mls"

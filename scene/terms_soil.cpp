@@ -193,8 +193,8 @@ void add_soil_terms(std::vector<TermSpec>& t) {
   t.push_back(soil_term(
       "wall_stress_linear_continuation",
       "Wall particles take the Shepard mean of their soil neighbours' stress, each continued to "
-      "the wall particle with its own corrected gradient (first order, exact for a geostatic "
-      "state); soil_solver/wall_stress_continuation.h.",
+      "the wall particle with its own corrected gradient, limited by the weight's continuation "
+      "(exact for a geostatic state); soil_solver/wall_stress_continuation.h.",
       "walls acting on soil, or a fixed material, and soil.wall_stress_continuation = \"linear\"",
       [](const Scene& s) {
         return soil(s).wall_stress_continuation == "linear" &&
@@ -202,10 +202,11 @@ void add_soil_terms(std::vector<TermSpec>& t) {
                 any_material(s, [](const SoilMaterial& x) { return x.fixed; }));
       },
       {Key("soil.wall_stress_continuation", T::String)
-           .fallback("\"linear\"")
+           .fallback("\"weight\"")
            .one_of({"linear", "weight"})
            .doc("How a wall particle continues its soil neighbours' stress to its own place. "
-                "linear: sigma_f + grad sigma_f . (x_w - x_f), the gradient corrected to first "
+                "linear: sigma_f + grad sigma_f . (x_w - x_f) on the diagonal where that change "
+                "has the weight's sign and is smaller (minmod), the gradient corrected to first "
                 "order over f's soil neighbours (where that support is too thin, the weight "
                 "form); weight: sigma_f - rho_f (g . (x_w - x_f)) I, the weight continued "
                 "isotropically, so a floor's and a corner's wall particles are compressed "

@@ -17,7 +17,7 @@
 // the walls (measured: a frictionless 1 m column carried 9 % more than its weight at the bottom).
 // x_wf = x_w - x_f, tension positive (hence the minus sign: below the soil the wall is more
 // compressed by the weight of the soil between w and f). That is the "weight" continuation of
-// soil.wall_stress_continuation; "linear" (the default) continues each neighbour's stress with its
+// soil.wall_stress_continuation (the default); "linear" continues each neighbour's stress with its
 // own gradient instead, sigma_f + grad sigma_f . x_wf, exact for a geostatic state's horizontal
 // stress too (wall_stress_continuation.h); a neighbour whose gradient is not trusted keeps the
 // weight form.
@@ -57,7 +57,8 @@ void update_soil_wall_state(const sph::NeighbourList<D>& neighbours, const Kerne
       sum_rho_w += P.density[it->b] * kw;
       sum_sigma_w += kw * P.stress[it->b];
       if (linear && gradients[it->b].trusted)
-        sum_sigma_w.noalias() += kw * gradients[it->b].change_over(it->x_ab);
+        sum_sigma_w.noalias() += kw * limited_change(gradients[it->b].change_over(it->x_ab),
+                                                     -P.density[it->b] * body.dot(it->x_ab));
       else
         sum_rho_x_w += (P.density[it->b] * kw) * it->x_ab;
       sum_v_w += kw * P.velocity[it->b];

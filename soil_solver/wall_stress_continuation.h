@@ -1,18 +1,26 @@
 // Linear continuation of the soil's stress into its wall particles (soil.wall_stress_continuation
-// = "linear"; used by update_soil_wall_state, soil_walls.h).
+// = "linear", an option; "weight" is the default; used by update_soil_wall_state, soil_walls.h).
 //
 // A wall particle w takes the Shepard mean of its free soil neighbours f, each continued to x_w:
 //   sigma_w = sum_f W_wf c_f(x_w) / sum_f W_wf
 //   "weight": c_f = sigma_f - rho_f (g . x_wf) I   (Adami, Hu & Adams 2012 eq. 27, made isotropic)
-//   "linear": c_f = sigma_f + sum_k (d sigma / d x_k)_f x_wf,k   (first order, Taylor)
-// x_wf = x_w - x_f. The weight form continues the normal stress that carries the weight onto a
-// floor exactly, but its horizontal stress grows with depth as fast as the vertical one, where a
-// geostatic state grows it K0 times as fast: the floor's and a corner's wall particles are too
-// compressed sideways by (1 - K0) rho g dy. Along a floor that excess cancels left and right; at a
-// corner it does not, and a settled column carried 0.09-0.14 % more weight in its wall columns
-// over the lowest 0.1 m at dp 2.5 mm, an error that grew as dp fell (docs/validation-studies.md,
-// soil_column, session 30). The linear form is exact for any linear stress field (the geostatic
-// one included) and needs no gravity: it continues the soil's own gradient, with its K0.
+//   "linear": c_f = sigma_f + limited(sum_k (d sigma / d x_k)_f x_wf,k, -rho_f (g . x_wf))
+// x_wf = x_w - x_f; limited() keeps, per diagonal component, the first-order (Taylor) change
+// where it has the sign of the weight's and is smaller, and the weight's change otherwise (a
+// minmod limiter); the shear gets the weight form's, none. The weight form continues the normal
+// stress that carries the weight onto a floor exactly, but its horizontal stress grows with depth
+// as fast as the vertical one, where a geostatic state grows it K0 times as fast: the floor's and a
+// corner's wall particles are too compressed sideways by (1 - K0) rho g dy. Along a floor that
+// excess cancels left and right; at a corner it does not, and a settled column carried 0.09-0.14 %
+// more weight in its wall columns over the lowest 0.1 m at dp 2.5 mm, an error that grew as dp fell
+// (docs/validation-studies.md, soil_column, session 30). The limited linear form is exact for a
+// geostatic state (its K0 included: K0 rho g dy has the sign of rho g dy and is smaller) and never
+// continues a component further than the weight does. Why limited: the plain Taylor form
+// extrapolates the row-to-row stress oscillation of the soil next to a floor (the second wall layer
+// sees one soil row, the first two), and the wall feeds it back: a soil column without the stress
+// filter went unstable in 0.05 s (max speed 0.6 m/s, vertical stress off by 100-380 % near its
+// floor, dp 5 mm; docs/validation-studies.md, session 32). With the limiter the same column stays
+// at rest (1.4e-8 m/s).
 //
 // The gradient is the first-order corrected SPH gradient over the free neighbours b of f
 // (Bonet & Lok 1999, Comput. Methods Appl. Mech. Engrg. 180, 97-115; Randles & Libersky 1996):
@@ -27,6 +35,7 @@
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -39,6 +48,19 @@ namespace porosph::soil {
 /// Smallest eigenvalue of sym(A_f) (1 with a full support on a lattice, about 1/2 next to a
 /// straight wall, 1/4 in a corner) below which f's stress gradient is not used.
 inline constexpr double kMinimumGradientSupport = 0.2;
+
+/// Per component: the linear change where it has the sign of the weight form's and is smaller,
+/// else the weight form's (a minmod limiter; Roe 1986, Annu. Rev. Fluid Mech. 18, 337-365). Only
+/// the diagonal can differ from the weight form's, which has no shear.
+inline Eigen::Matrix3d limited_change(const Eigen::Matrix3d& linear, double weight_change) {
+  Eigen::Matrix3d out = Eigen::Matrix3d::Zero();
+  for (int k = 0; k < 3; ++k) {
+    const double l = linear(k, k);
+    out(k, k) =
+        (l * weight_change > 0.0 && std::abs(l) < std::abs(weight_change)) ? l : weight_change;
+  }
+  return out;
+}
 
 /// d sigma / d x_k of one free particle (3x3 each, in-plane k < D) and whether it is trusted.
 template <int D>

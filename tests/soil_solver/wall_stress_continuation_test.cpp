@@ -109,5 +109,20 @@ TEST(WallStressContinuation, WeightContinuationOverCompressesTheWallsSideways) {
   EXPECT_GT(c.worst_error(0, 0), 0.5 * (1.0 - kK0));
 }
 
+TEST(WallStressContinuation, TheLimiterKeepsTheSmallerChangeOfTheWeightsSign) {
+  const Matrix3d linear = Eigen::Vector3d(0.5, 2.0, -1.0).asDiagonal();
+  const Matrix3d limited = limited_change(linear, 1.0);
+  EXPECT_EQ(limited(0, 0), 0.5);  // same sign, smaller: the linear change (a K0 < 1)
+  EXPECT_EQ(limited(1, 1), 1.0);  // larger: the weight's (never further than the weight)
+  EXPECT_EQ(limited(2, 2), 1.0);  // opposite sign: the weight's
+  // Off the diagonal the weight form has no change, and neither has the limited one.
+  Matrix3d shear = Matrix3d::Zero();
+  shear(0, 1) = shear(1, 0) = 3.0;
+  EXPECT_EQ(limited_change(shear, 1.0), Matrix3d::Identity());
+  // Where the weight does not change the stress (a side wall, g . x_wf = 0) nothing does: an
+  // oscillating soil stress is averaged, never extrapolated into the wall.
+  EXPECT_EQ(limited_change(linear, 0.0), Matrix3d::Zero());
+}
+
 }  // namespace
 }  // namespace porosph::soil

@@ -52,7 +52,7 @@ void water_in_bed(const std::string& run_dir, const nlohmann::json& run, Fluidiz
   for (std::size_t k = 0; k < dim; ++k)
     if (dir[k] == 0.0) region *= zone_hi[k] - zone_lo[k];
   io::SnapshotReader reader(io::water_snapshot_path(run_dir));
-  double velocity = 0, flux = 0, flux_density = 0, fill = 0;
+  double velocity = 0, velocity_squared = 0, flux = 0, flux_density = 0, fill = 0;
   int snapshots = 0;
   for (const auto& snap : reader.snapshots()) {
     if (snap.time < window_start - 1e-12) continue;
@@ -83,7 +83,9 @@ void water_in_bed(const std::string& run_dir, const nlohmann::json& run, Fluidiz
     }
     if (n == 0 || n_inflow == 0) continue;
     const double rho_inflow = sum_inflow_rho / n_inflow;
-    velocity += sum_v / n / out.superficial_velocity;
+    const double ratio = sum_v / n / out.superficial_velocity;
+    velocity += ratio;
+    velocity_squared += ratio * ratio;
     flux += sum_flux / n / (rho_inflow * out.superficial_velocity);
     flux_density += sum_mv / region / (rho_inflow * out.superficial_velocity);
     fill += sum_volume / region;
@@ -91,6 +93,12 @@ void water_in_bed(const std::string& run_dir, const nlohmann::json& run, Fluidiz
   }
   if (snapshots == 0) throw std::runtime_error(run_dir + ": no water in the bed in the window");
   out.velocity_ratio = velocity / snapshots;
+  out.window_snapshots = snapshots;
+  if (snapshots > 1) {
+    const double variance =
+        std::max(0.0, (velocity_squared - velocity * velocity / snapshots) / (snapshots - 1));
+    out.velocity_ratio_error = std::sqrt(variance / snapshots);
+  }
   out.mass_flux_ratio = flux / snapshots;
   out.mass_flux_density_ratio = flux_density / snapshots;
   out.volume_fill = fill / snapshots;

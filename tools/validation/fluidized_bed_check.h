@@ -41,7 +41,11 @@ struct FluidizedBedCheck {
   /// same for the mass flux rho v against rho_inflow U, which steady mass conservation fixes.
   double superficial_velocity = 0;  ///< U = Q_max / cross_section [m/s]
   double velocity_ratio = 0;        ///< mean v / U
-  double mass_flux_ratio = 0;       ///< mean rho v / (rho_inflow U)
+  /// Standard error of velocity_ratio over the window's snapshots (their spread / sqrt(count)):
+  /// how far a single transient moves it. 0 with one snapshot.
+  double velocity_ratio_error = 0;
+  int window_snapshots = 0;    ///< snapshots in the steady window
+  double mass_flux_ratio = 0;  ///< mean rho v / (rho_inflow U)
   /// The mass flux through the bed as a density, sum m v / V_region, against rho_inflow U: the
   /// conserved quantity, whatever the particles' spacing.
   double mass_flux_density_ratio = 0;

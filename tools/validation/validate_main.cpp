@@ -167,9 +167,10 @@ int report_fluidized_bed(const porosph::validation::FluidizedBedCheck& c) {
                 c.onset_flow_rate >= 0 ? fmt("%.4f l/s", 1e3 * c.onset_flow_rate) : "none",
                 "0.07 .. 0.12 l/s (experiment)", "-", "inside the range", c.onset_in_target);
   std::printf(
-      "water in the bed (steady window): mean velocity %.4f x Q/A (U = %.4g m/s), mass flux"
-      " rho v %.4f x rho_inflow U\n",
-      c.velocity_ratio, c.superficial_velocity, c.mass_flux_ratio);
+      "water in the bed (steady window): mean velocity %.4f +- %.4f x Q/A (standard error over %d"
+      " snapshots; U = %.4g m/s), mass flux rho v %.4f x rho_inflow U\n",
+      c.velocity_ratio, c.velocity_ratio_error, c.window_snapshots, c.superficial_velocity,
+      c.mass_flux_ratio);
   std::printf(
       "mass flux through the bed sum m v / V: %.4f x rho_inflow U; the particles' volumes m / rho"
       " fill %.4f of the bed (1: their spacing matches their density; above 1 they are crowded and"
