@@ -111,6 +111,12 @@ TEST(TermRegistry, TheCoupledBedExchangesItsSeepageLaw) {
   EXPECT_FALSE(has(exchange, "seepage_darcy_conductivity"));
   const auto soil = active_terms(s, "soil");
   EXPECT_TRUE(has(soil, "drucker_prager_return"));
+  // The fixed gravel is held like a wall: its stress continues the weight unless asked for the
+  // linear continuation (an option, docs/soil.md, Walls).
+  EXPECT_FALSE(has(soil, "wall_stress_linear_continuation"));
+  const Scene linear =
+      load_scene_text(kSubmergedBed2D, "bed.toml", {"soil.wall_stress_continuation=\"linear\""});
+  EXPECT_TRUE(has(active_terms(linear, "soil"), "wall_stress_linear_continuation"));
 }
 
 }  // namespace
