@@ -23,6 +23,13 @@ bool any_material(const Scene& s, Pick pick) {
 
 bool seeps(const SoilMaterial& m) { return m.seepage != "none"; }
 
+/// The soil phase has fixed particles that take their stress from the soil around them: walls
+/// acting on soil, or a fixed material (soil_solver/soil_walls.h).
+bool has_soil_wall_particles(const Scene& s) {
+  return !s.walls_acting_on("soil").empty() ||
+         any_material(s, [](const SoilMaterial& x) { return x.fixed; });
+}
+
 TermSpec term(std::string phase, std::string name, std::string summary, std::string runs_when,
               std::function<bool(const Scene&)> active, std::vector<KeySpec> keys = {}) {
   return {std::move(name),      std::move(phase), std::move(summary),
@@ -137,10 +144,7 @@ void add_soil_terms(std::vector<TermSpec>& t) {
                         "Wall particles of the skeleton, and the particles of fixed materials, "
                         "which are held like walls; soil_solver/soil_walls.h.",
                         "walls acting on soil, or a material with fixed = true",
-                        [](const Scene& s) {
-                          return !s.walls_acting_on("soil").empty() ||
-                                 any_material(s, [](const SoilMaterial& x) { return x.fixed; });
-                        },
+                        has_soil_wall_particles,
                         {Key("soil.wall_condition", T::String)
                              .fallback("\"no_slip\"")
                              .one_of({"no_slip", "free_slip"})
@@ -197,9 +201,7 @@ void add_soil_terms(std::vector<TermSpec>& t) {
       "(exact for a geostatic state); soil_solver/wall_stress_continuation.h.",
       "walls acting on soil, or a fixed material, and soil.wall_stress_continuation = \"linear\"",
       [](const Scene& s) {
-        return soil(s).wall_stress_continuation == "linear" &&
-               (!s.walls_acting_on("soil").empty() ||
-                any_material(s, [](const SoilMaterial& x) { return x.fixed; }));
+        return soil(s).wall_stress_continuation == "linear" && has_soil_wall_particles(s);
       },
       {Key("soil.wall_stress_continuation", T::String)
            .fallback("\"weight\"")

@@ -27,9 +27,9 @@
 //   A_f = sum_b V_b grad_f W_fb (x) x_bf,   s_f,k = sum_b V_b (sigma_b - sigma_f) (grad_f W_fb)_k,
 //   (d sigma / d x_m)_f = sum_k (A_f^-1)_mk s_f,k,
 // exact for a linear field whatever the neighbours' layout, as long as A_f can be inverted. Where
-// the smallest eigenvalue of A_f's symmetric part is below kMinimumGradientSupport (a particle
-// with its neighbours on less than about a quarter of its support: a splash, a free corner) the
-// gradient is not trusted and f falls back to the weight form, pair by pair.
+// the smallest eigenvalue of A_f (symmetric for a radial kernel) is below kMinimumGradientSupport
+// (a particle with its neighbours on less than about a quarter of its support: a splash, a free
+// corner) the gradient is not trusted and f falls back to the weight form, pair by pair.
 #pragma once
 
 #include <Eigen/Core>
@@ -45,7 +45,7 @@
 
 namespace porosph::soil {
 
-/// Smallest eigenvalue of sym(A_f) (1 with a full support on a lattice, about 1/2 next to a
+/// Smallest eigenvalue of A_f (1 with a full support on a lattice, about 1/2 next to a
 /// straight wall, 1/4 in a corner) below which f's stress gradient is not used.
 inline constexpr double kMinimumGradientSupport = 0.2;
 
@@ -81,6 +81,8 @@ template <int D, class List, class Kernel>
 StressGradient<D> corrected_stress_gradient(const List& neighbours, const Kernel& kernel,
                                             const SoilParticles<D>& P, std::int64_t a) {
   StressGradient<D> g;
+  // A = sum_b V_b grad_a W_ab (x) x_ba = -sum_b V_b F_ab x_ab x_ab^T (grad_a W_ab = F_ab x_ab):
+  // symmetric for a radial kernel.
   MatD<D> A = MatD<D>::Zero();
   std::array<Eigen::Matrix3d, D> s;
   for (auto& m : s) m.setZero();
@@ -88,12 +90,11 @@ StressGradient<D> corrected_stress_gradient(const List& neighbours, const Kernel
     const std::int32_t b = it->b;
     const double volume = P.mass[b] / P.density[b];
     const sph::Vec<D> grad = kernel.gradient(it->x_ab, it->r);  // grad_a W_ab
-    A.noalias() -= volume * grad * it->x_ab.transpose();        // x_ba = -x_ab
+    A.noalias() -= volume * grad * it->x_ab.transpose();
     const Eigen::Matrix3d difference = P.stress[b] - P.stress[a];
     for (int k = 0; k < D; ++k) s[k].noalias() += (volume * grad[k]) * difference;
   }
-  const MatD<D> symmetric = 0.5 * (A + A.transpose());
-  const Eigen::SelfAdjointEigenSolver<MatD<D>> eigen(symmetric, Eigen::EigenvaluesOnly);
+  const Eigen::SelfAdjointEigenSolver<MatD<D>> eigen(A, Eigen::EigenvaluesOnly);
   if (!(eigen.eigenvalues()(0) >= kMinimumGradientSupport)) return g;
   const MatD<D> inverse = A.inverse();
   for (int m = 0; m < D; ++m) {
