@@ -19,7 +19,7 @@ void check_box(const sph::Vec<D>& lo, const sph::Vec<D>& hi, const std::string& 
 }  // namespace
 
 template <int D>
-FlowZones<D>::FlowZones(const scene::WaterPhase& water, double dp, double hold_until)
+FlowZones<D>::FlowZones(const scene::WaterPhase& water, double dp, double h, double hold_until)
     : hold_until_(hold_until) {
   for (std::size_t i = 0; i < water.inflows.size(); ++i) {
     const scene::InflowZone& zone = water.inflows[i];
@@ -46,6 +46,13 @@ FlowZones<D>::FlowZones(const scene::WaterPhase& water, double dp, double hold_u
     const long rows = sph::lattice_count(f.box.min[f.axis], f.box.max[f.axis], dp);
     if (rows < 1) throw std::invalid_argument(what + ": shorter than one particle spacing");
     f.lattice_length = static_cast<double>(rows) * dp;
+    if (f.box.max[f.axis] - f.box.min[f.axis] < 2.0 * h - 1e-12 * dp)
+      throw std::invalid_argument(
+          what + ": the zone is " + std::to_string(f.box.max[f.axis] - f.box.min[f.axis]) +
+          " m long along its direction; it needs at least the kernel support 2h = " +
+          std::to_string(2.0 * h) +
+          " m (the water leaving it must see zone particles across "
+          "its whole kernel)");
     f.ramp = zone;
     inflows_.push_back(f);
   }

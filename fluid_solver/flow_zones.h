@@ -38,10 +38,12 @@ class FlowZones {
   using Vec = sph::Vec<D>;
 
   FlowZones() = default;
-  /// From water.inflows / water.outflows; dp is the lattice spacing; hold_until the end of the
-  /// damping stage (0: none). Throws std::invalid_argument on vectors of the wrong length, an
-  /// empty box, or a direction that is not a unit vector along one axis.
-  FlowZones(const scene::WaterPhase& water, double dp, double hold_until);
+  /// From water.inflows / water.outflows; dp is the lattice spacing, h the smoothing length;
+  /// hold_until the end of the damping stage (0: none). Throws std::invalid_argument on vectors of
+  /// the wrong length, an empty box, a direction that is not a unit vector along one axis, or an
+  /// inflow zone shorter along it than the kernel support 2h: the water just downstream must see
+  /// a full kernel of zone particles behind it (a 1.3 dp zone let the fluidised bed drain).
+  FlowZones(const scene::WaterPhase& water, double dp, double h, double hold_until);
 
   std::size_t inflow_count() const { return inflows_.size(); }
   bool has_outflows() const { return !outflows_.empty(); }

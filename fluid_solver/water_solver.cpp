@@ -43,7 +43,7 @@ WaterSolver<D>::WaterSolver(const scene::Scene& s)
       box_(sph::DomainBox<D>::from_scene(s, 2.0 * params_.h)),
       kernel_(s.run.kernel, params_.h, s.run.dp, s.run.kernel_gradient != "plain"),
       damping_(sph::DampingStage::from_scene(s)),
-      zones_(*s.water, params_.dp, damping_.duration()),
+      zones_(*s.water, params_.dp, params_.h, damping_.duration()),
       reservoirs_(*s.water, params_.gravity, params_.dp, params_.h, params_.eos),
       open_(*s.water, {params_.gravity, params_.h, params_.eos}, params_.dp, damping_.duration(),
             static_cast<int>(zones_.inflow_count())),

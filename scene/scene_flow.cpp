@@ -13,7 +13,9 @@ void add_flow_zones(SceneSchema& s) {
   s.tables.push_back({"water.inflow[]", true, false,
                       "Inflow zones: a box whose water particles move with a prescribed velocity "
                       "along `direction`; a particle leaving the box downstream becomes free and a "
-                      "new one enters at its upstream end. Give `velocity`, or `flow_rate` with "
+                      "new one enters at its upstream end. The box must be at least the kernel "
+                      "support 2h long along `direction` (the water leaving it needs a full "
+                      "kernel of zone particles behind it). Give `velocity`, or `flow_rate` with "
                       "`cross_section`."});
   add_zone_box_keys(s, "water.inflow[]");
   s.keys.push_back(Key("water.inflow[].direction", T::Vector)

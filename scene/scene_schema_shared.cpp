@@ -114,15 +114,15 @@ void add_observables(SceneSchema& s) {
                        .required()
                        .only_when("kind", {"pressure_at"})
                        .doc("Probe point."));
-  s.keys.push_back(
-      Key("observables[].field", T::String)
-          .required()
-          .one_of({"density", "pressure", "porosity", "speed", "velocity_x", "velocity_y",
-                   "velocity_z", "stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_xz",
-                   "stress_yz"})
-          .only_when("kind", {"mean_field"})
-          .doc("Particle field averaged. pressure: water only; porosity and stress_* (Pa, "
-               "tension positive): soil only; velocity_z: 3D only."));
+  s.keys.push_back(Key("observables[].field", T::String)
+                       .required()
+                       .one_of({"density", "mass", "pressure", "porosity", "speed", "velocity_x",
+                                "velocity_y", "velocity_z", "stress_xx", "stress_yy", "stress_zz",
+                                "stress_xy", "stress_xz", "stress_yz"})
+                       .only_when("kind", {"mean_field"})
+                       .doc("Particle field averaged (mass: kg/m in 2D, kg in 3D). pressure: water "
+                            "only; porosity and stress_* (Pa, "
+                            "tension positive): soil only; velocity_z: 3D only."));
   s.keys.push_back(Key("observables[].load", T::String)
                        .required()
                        .only_when("kind", {"load_velocity"})

@@ -45,6 +45,7 @@ struct Region {
 /// The particle fields mean_field can average (scene key observables[].field).
 enum class ParticleField {
   Density,
+  Mass,
   Pressure,
   Porosity,
   Speed,
@@ -162,6 +163,8 @@ double mean_field(const ParticleView<D>& p, ParticleField field, const Region<D>
   switch (field) {
     case ParticleField::Density:
       return scalar(p.density);
+    case ParticleField::Mass:
+      return scalar(p.mass);
     case ParticleField::Pressure:
       return scalar(p.pressure);
     case ParticleField::Porosity:

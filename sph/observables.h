@@ -53,13 +53,13 @@ inline ParticleField parse_particle_field(const std::string& name, const std::st
   static constexpr struct {
     const char* name;
     ParticleField field;
-  } table[] = {{"density", ParticleField::Density},      {"pressure", ParticleField::Pressure},
-               {"porosity", ParticleField::Porosity},    {"speed", ParticleField::Speed},
-               {"velocity_x", ParticleField::VelocityX}, {"velocity_y", ParticleField::VelocityY},
-               {"velocity_z", ParticleField::VelocityZ}, {"stress_xx", ParticleField::StressXX},
-               {"stress_yy", ParticleField::StressYY},   {"stress_zz", ParticleField::StressZZ},
-               {"stress_xy", ParticleField::StressXY},   {"stress_xz", ParticleField::StressXZ},
-               {"stress_yz", ParticleField::StressYZ}};
+  } table[] = {{"density", ParticleField::Density},      {"mass", ParticleField::Mass},
+               {"pressure", ParticleField::Pressure},    {"porosity", ParticleField::Porosity},
+               {"speed", ParticleField::Speed},          {"velocity_x", ParticleField::VelocityX},
+               {"velocity_y", ParticleField::VelocityY}, {"velocity_z", ParticleField::VelocityZ},
+               {"stress_xx", ParticleField::StressXX},   {"stress_yy", ParticleField::StressYY},
+               {"stress_zz", ParticleField::StressZZ},   {"stress_xy", ParticleField::StressXY},
+               {"stress_xz", ParticleField::StressXZ},   {"stress_yz", ParticleField::StressYZ}};
   for (const auto& entry : table)
     if (name == entry.name) return entry.field;
   throw std::invalid_argument(what + ": unknown field '" + name + "'");

@@ -28,7 +28,7 @@ TEST(FlowZones, GeometrySpeedsAndBadInput) {
   scene::OutflowZone later = outflow({2, 0}, {2.2, 0.1});
   later.start_time = 0.3;  // a zone that opens at 0.3 s
   w.outflows.push_back(later);
-  const FlowZones<2> zones(w, 0.01, 0.15);  // damping stage until 0.15 s
+  const FlowZones<2> zones(w, 0.01, 0.012, 0.15);  // damping stage until 0.15 s
   ASSERT_EQ(zones.inflow_count(), 1u);
   EXPECT_EQ(zones.inflow_at(Vec2(0.05, 0.02)), 0);
   EXPECT_EQ(zones.inflow_at(Vec2(0.15, 0.02)), -1);
@@ -44,7 +44,7 @@ TEST(FlowZones, GeometrySpeedsAndBadInput) {
   EXPECT_EQ(zones.velocity(0, 0.4)[1], 0.0);
 
   // Downstream face of a -x zone is x = 0: a particle moved past it reports 1, one inside 0.
-  FlowZones<2> moving(w, 0.01, 0.0);
+  FlowZones<2> moving(w, 0.01, 0.012, 0.0);
   moving.begin_step(1.0, 0.01);  // full speed 2: the step moves by 0.02
   Vec2 x(0.025, 0.02), v, v_previous;
   EXPECT_EQ(moving.move(0, x, v, v_previous, 0.01), 0);
@@ -54,11 +54,17 @@ TEST(FlowZones, GeometrySpeedsAndBadInput) {
 
   scene::WaterPhase diagonal;
   diagonal.inflows.push_back(inflow({0, 0}, {0.1, 0.1}, {0.6, 0.8}, 1.0));
-  EXPECT_THROW((FlowZones<2>(diagonal, 0.01, 0.0)), std::invalid_argument);
+  EXPECT_THROW((FlowZones<2>(diagonal, 0.01, 0.012, 0.0)), std::invalid_argument);
   scene::WaterPhase empty_box;
   empty_box.outflows.push_back(outflow({0, 0}, {0.1, 0.0}));
-  EXPECT_THROW((FlowZones<2>(empty_box, 0.01, 0.0)), std::invalid_argument);
-  EXPECT_THROW((FlowZones<3>(w, 0.01, 0.0)), std::invalid_argument);  // 2-component vectors
+  EXPECT_THROW((FlowZones<2>(empty_box, 0.01, 0.012, 0.0)), std::invalid_argument);
+  EXPECT_THROW((FlowZones<3>(w, 0.01, 0.012, 0.0)), std::invalid_argument);  // 2-component vectors
+  // An inflow zone shorter along its direction than the kernel support 2h = 0.024 m.
+  scene::WaterPhase shallow;
+  shallow.inflows.push_back(inflow({0, 0}, {0.1, 0.02}, {0, 1}, 1.0));
+  EXPECT_THROW((FlowZones<2>(shallow, 0.01, 0.012, 0.0)), std::invalid_argument);
+  shallow.inflows[0].max[1] = 0.024;
+  EXPECT_NO_THROW((FlowZones<2>(shallow, 0.01, 0.012, 0.0)));
 }
 
 /// Zone particles of a lone inflow zone [0, 0.4] x [0, 0.02]^(D-1) along +x (dp 0.01: 40 rows of

@@ -162,7 +162,7 @@ std::vector<ErrorCase> soil_error_cases() {
        "observables[1].field", "field = \"porosity\"", "only allowed when kind is 'mean_field'"},
       {"unknown field", with(g, "\"stress_yy\"", "\"stress_yyy\""), "observables[2].field",
        "field =",
-       "must be 'density', 'pressure', 'porosity', 'speed', 'velocity_x', 'velocity_y', "
+       "must be 'density', 'mass', 'pressure', 'porosity', 'speed', 'velocity_x', 'velocity_y', "
        "'velocity_z', 'stress_xx', 'stress_yy', 'stress_zz', 'stress_xy', 'stress_xz' or "
        "'stress_yz', got 'stress_yyy' (did you mean 'stress_yy'?)"},
       {"water field on soil", with(g, "\"stress_yy\"", "\"pressure\""), "observables[2].field",

@@ -129,6 +129,7 @@ TEST(SphObservables, EveryKindWithAndWithoutRegion2D) {
       // |u| = 0.5, 0.7, 1.3, 1.0
       {make("max_displacement"), 1.3, 1.0},
       {mean_of("density"), (1000.0 + 1010.0 + 990.0 + 1020.0) / 4, (1010.0 + 1020.0) / 2},
+      {mean_of("mass"), (1.0 + 2.0 + 0.5 + 4.0) / 4, (2.0 + 4.0) / 2},
       {mean_of("pressure"), 250.0, 300.0},
       {mean_of("porosity"), (0.3 + 0.4 + 0.5 + 0.35) / 4, (0.4 + 0.35) / 2},
       {mean_of("speed"), (1.0 + 2.0 + 5.0 + r10) / 4, (2.0 + r10) / 2},

@@ -155,6 +155,23 @@ class ConvergenceMode(unittest.TestCase):
             capture_output=True, text=True, env=dict(os.environ, STUB_MODE=mode))
         return result, out
 
+    def test_an_edited_scene_is_rerun_and_an_unchanged_one_is_not(self):
+        scene = os.path.join(tempfile.mkdtemp(prefix="porosph-study-scene-"), "scene.toml")
+        with open(SCENE) as f, open(scene, "w") as g:
+            g.write(f.read())
+        out = tempfile.mkdtemp(prefix="porosph-converge-stub-")
+        command = [sys.executable, TOOL, scene, "--check", "any", "--converge",
+                   "run.dp=0.02,0.01,0.005", "--out", out, "--bin", self.stub_bin()]
+        env = dict(os.environ, STUB_MODE="falls")
+        first = subprocess.run(command, capture_output=True, text=True, env=env)
+        self.assertEqual(first.stdout.count("coupler run"), 3, first.stdout + first.stderr)
+        same = subprocess.run(command, capture_output=True, text=True, env=env)
+        self.assertNotIn("coupler run", same.stdout)
+        with open(scene, "a") as g:
+            g.write("# edited\n")
+        edited = subprocess.run(command, capture_output=True, text=True, env=env)
+        self.assertEqual(edited.stdout.count("coupler run"), 3, edited.stdout + edited.stderr)
+
     def test_growing_error_fails_with_exit_status_one(self):
         result, out = self.run_stub("grows")
         self.assertEqual(result.returncode, 1, result.stdout + result.stderr)

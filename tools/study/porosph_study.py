@@ -12,7 +12,8 @@ Every combination of the --vary values is one variant (a Cartesian product), run
 `porosph_validate CHECK OUT/variant_NN`. The error of a variant is the first figure of
 porosph_validate's first summary line (its `error` column; an absolute value, % stripped).
 Variants already run (OUT/variant_NN/run.json, and study_overrides.json with the same
-overrides; not one whose status is still "running") are not rerun.
+overrides and the same scene file, by its SHA-256; not one whose status is still "running") are
+not rerun; a run of an edited scene is.
 Exit status: 0 when every variant ran to completion, 1 otherwise (the table is still written).
 
 Convergence mode: --converge KEY=V1,V2,... instead of --vary runs one level per value (KEY is the
@@ -37,6 +38,7 @@ import argparse
 import csv
 import itertools
 import json
+import hashlib
 import math
 import os
 import re
@@ -81,13 +83,21 @@ def show(x, spec):
     return "-" if math.isnan(x) else format(x, spec)
 
 
+def run_marker(args, overrides):
+    """What study_overrides.json records of a run: its overrides and its scene file's SHA-256."""
+    with open(args.scene, "rb") as f:
+        scene = hashlib.sha256(f.read()).hexdigest()
+    return {"overrides": overrides, "scene_sha256": scene}
+
+
 def run_variant(args, overrides, out):
-    """Runs one variant unless OUT already holds a run with the same overrides; its run.json."""
+    """Runs one variant unless OUT already holds a run with the same overrides of the same scene
+    file; its run.json."""
     record = os.path.join(out, "run.json")
     marker = os.path.join(out, "study_overrides.json")
     if os.path.exists(record) and os.path.exists(marker):
         with open(marker) as f:
-            if json.load(f) == overrides:
+            if json.load(f) == run_marker(args, overrides):
                 with open(record) as g:
                     run = json.load(g)
                 if run.get("status") != "running":  # not one still running or killed
@@ -101,7 +111,7 @@ def run_variant(args, overrides, out):
     if not os.path.exists(record):
         return None
     with open(marker, "w") as f:
-        json.dump(overrides, f)
+        json.dump(run_marker(args, overrides), f)
     with open(record) as f:
         return json.load(f)
 

@@ -68,17 +68,23 @@ STUDIES = [
           sets=["run.end_time=0.16"]),
 ]
 
-# The fluidised bed's quick variant (report.py's case: E softened 25x, the ramp 1 s, 4 s).
-# Snapshots every 0.02 s: the 0.5 s window's mean then has 26 samples (with the scene's 0.1 s,
-# six, and one transient snapshot moved the velocity's mean by 0.07 %; session 32).
-BED_QUICK = ["run.end_time=4.0", "water.inflow[0].ramp_time=1.0", "run.output_interval=0.02"] + [
+# The fluidised bed's quick variant (report.py's case: E softened 25x, the ramp 1 s, 4 s). The
+# velocity and the mass flux are time means of the scene's observables over whole inflow periods
+# (porosph_validate fluidized_bed). The porosity is judged on its self-convergence (the change from
+# the coarser level): against the experiment's 0.51 the levels land -0.0007 / +0.0021 / -0.0000,
+# and a coarse level's chance closeness to an experiment says nothing of the scheme; the error
+# against 0.51 is still reported per level (docs/validation-studies.md, session 33).
+BED_QUICK = ["run.end_time=4.0", "water.inflow[0].ramp_time=1.0"] + [
     f"soil.materials[{m}].young_modulus=2.0e5" for m in range(3)]
 STUDIES += [
     study("fluidized_bed_porosity", "fluidized_bed", "cases/fluidized_bed/scene.toml",
-          "fluidized_bed", [0.004, 0.002, 0.001], error_from="value", sets=BED_QUICK,
+          "fluidized_bed", [0.004, 0.002, 0.001], error_from="change", sets=BED_QUICK,
           check_args=["--window", "0.5"]),
     study("fluidized_bed_velocity", "fluidized_bed", "cases/fluidized_bed/scene.toml",
           "fluidized_bed", [0.004, 0.002, 0.001], quantity="velocity in the bed",
+          sets=BED_QUICK, check_args=["--window", "0.5"]),
+    study("fluidized_bed_mass_flux", "fluidized_bed", "cases/fluidized_bed/scene.toml",
+          "fluidized_bed", [0.004, 0.002, 0.001], quantity="mass flux in the bed",
           sets=BED_QUICK, check_args=["--window", "0.5"]),
 ]
 

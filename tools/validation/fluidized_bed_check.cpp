@@ -104,6 +104,63 @@ void water_in_bed(const std::string& run_dir, const nlohmann::json& run, Fluidiz
   out.volume_fill = fill / snapshots;
 }
 
+/// Time mean of column y over [from, to] (trapezoids on the rows, the ends interpolated).
+double time_mean(const std::vector<double>& t, const std::vector<double>& y, double from,
+                 double to) {
+  double integral = 0.0;
+  for (std::size_t k = 1; k < t.size(); ++k) {
+    if (t[k] <= from || t[k - 1] >= to) continue;
+    const double t0 = std::max(t[k - 1], from), t1 = std::min(t[k], to);
+    integral += 0.5 * (interpolate(t, y, t0) + interpolate(t, y, t1)) * (t1 - t0);
+  }
+  return integral / (to - from);
+}
+
+/// The inflow hands over one row of particles every dp / U, and each handover sends a pulse
+/// through the bed, so a mean over snapshots depends on how many pulses the window happens to
+/// catch. From the observables bed_water_velocity, bed_water_density and inflow_water_mass
+/// (sampled every run.timeseries_interval), the verdicts are time means over the whole inflow
+/// periods that fit in the steady window (at least one), ending at the last row; their standard
+/// errors are those of the periods' means (0 with one period). No-op without those columns.
+void water_in_bed_over_periods(const std::string& run_dir, const TimeSeries& series, double dp,
+                               int dimension, FluidizedBedCheck& out) {
+  for (const char* name : {"bed_water_velocity", "bed_water_density", "inflow_water_mass"})
+    if (!series.columns.count(name)) return;
+  const auto& t = series.column("t");
+  const auto& v = series.column("bed_water_velocity");
+  const auto& rho_bed = series.column("bed_water_density");
+  const auto& inflow_mass = series.column("inflow_water_mass");
+  const double volume = std::pow(dp, dimension);  // a particle's volume dp^D
+  out.inflow_period = dp / out.superficial_velocity;
+  out.whole_periods =
+      std::max(1, static_cast<int>(std::floor(out.steady_window / out.inflow_period + 1e-9)));
+  const int n = out.whole_periods;
+  const double end = t.back();
+  if (end - n * out.inflow_period < t.front())
+    throw std::runtime_error(run_dir + ": the run is shorter than one inflow period dp / U");
+  double sum_v = 0, sum_v2 = 0, sum_flux = 0, sum_flux2 = 0;
+  for (int p = 0; p < n; ++p) {
+    const double to = end - p * out.inflow_period, from = to - out.inflow_period;
+    const double ratio = time_mean(t, v, from, to) / out.superficial_velocity;
+    // rho_bed v / (m_inflow / dp^D U) from the periods' means: the covariance of density and
+    // velocity is of order (their relative swings)^2, below 1e-5 here.
+    const double flux =
+        ratio * time_mean(t, rho_bed, from, to) / (time_mean(t, inflow_mass, from, to) / volume);
+    sum_v += ratio, sum_v2 += ratio * ratio;
+    sum_flux += flux, sum_flux2 += flux * flux;
+  }
+  const auto standard_error = [n](double sum, double sum2) {
+    return n > 1 ? std::sqrt(std::max(0.0, (sum2 - sum * sum / n) / (n - 1)) / n) : 0.0;
+  };
+  out.snapshot_velocity_ratio = out.velocity_ratio;
+  out.snapshot_velocity_ratio_error = out.velocity_ratio_error;
+  out.velocity_ratio = sum_v / n;
+  out.velocity_ratio_error = standard_error(sum_v, sum_v2);
+  out.period_mass_flux_ratio = sum_flux / n;
+  out.period_mass_flux_ratio_error = standard_error(sum_flux, sum_flux2);
+  out.velocity_over_periods = true;
+}
+
 }  // namespace
 
 FluidizedBedCheck check_fluidized_bed(const std::string& run_dir, double steady_window) {
@@ -155,6 +212,9 @@ FluidizedBedCheck check_fluidized_bed(const std::string& run_dir, double steady_
     }
   }
   water_in_bed(run_dir, run, out, w0);
+  const auto& run_keys = run.at("parameters").at("run");
+  water_in_bed_over_periods(run_dir, series, run_keys.at("dp").get<double>(),
+                            run_keys.at("dimension").get<int>(), out);
   out.porosity_in_target = std::abs(out.steady_porosity - 0.51) <= 0.02;
   out.onset_in_target = out.onset_flow_rate >= 0.07e-3 && out.onset_flow_rate <= 0.12e-3;
   return out;

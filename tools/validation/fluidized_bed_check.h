@@ -44,7 +44,23 @@ struct FluidizedBedCheck {
   /// Standard error of velocity_ratio over the window's snapshots (their spread / sqrt(count)):
   /// how far a single transient moves it. 0 with one snapshot.
   double velocity_ratio_error = 0;
-  int window_snapshots = 0;    ///< snapshots in the steady window
+  int window_snapshots = 0;  ///< snapshots in the steady window
+  /// With the observables bed_water_velocity, bed_water_density and inflow_water_mass in
+  /// timeseries.csv (cases/fluidized_bed/scene.toml), velocity_ratio (and its error) is the time
+  /// mean over `whole_periods` inflow periods dp / U ending at the run's end (the inflow hands
+  /// over a row of particles once a period; docs/validation-studies.md), and the snapshot mean
+  /// above moves to snapshot_velocity_ratio.
+  bool velocity_over_periods = false;
+  double inflow_period = 0;  ///< dp / U [s]
+  int whole_periods = 0;
+  /// rho_bed v / (m_inflow / dp^D U) over the same periods (m_inflow: the inflow zone's particle
+  /// mass): steady mass conservation makes it 1. The zone hands over mass at m_inflow / dp^D U,
+  /// so weakly compressible water moves through the bed at U m_inflow / (dp^D rho_bed), above
+  /// Q / A by about the pressure drop from the inflow to the bed over (rho c0^2).
+  double period_mass_flux_ratio = 0;
+  double period_mass_flux_ratio_error = 0;
+  double snapshot_velocity_ratio = 0;
+  double snapshot_velocity_ratio_error = 0;
   double mass_flux_ratio = 0;  ///< mean rho v / (rho_inflow U)
   /// The mass flux through the bed as a density, sum m v / V_region, against rho_inflow U: the
   /// conserved quantity, whatever the particles' spacing.

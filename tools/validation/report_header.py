@@ -68,5 +68,11 @@ HEADER = ["# Validation report", "",
           "fluidized_bed rows and series were rerun (the fluidised bed the same to every "
           "printed digit); the heave's dp 10 / 5 mm levels fail at 5.75 s / not by 6 s (before 5.90 / 6.00 s; docs/"
           "validation-studies.md, 'The water walls' artificial viscosity on the normal only'); "
-          "the heave's dp 2.5 mm level and the rockfill rows predate it.",
+          "the heave's dp 2.5 mm level and the rockfill rows predate it. Since 2026-12-07 "
+          "(session 33) an inflow zone must be at least the kernel support 2h long (the "
+          "fluidised bed's was 5.1 mm, and its study's dp 4 mm level drained through it; now "
+          "12 mm), and the fluidised bed's velocity verdict is the time mean of an observable "
+          "sampled every 0.002 s over whole inflow periods dp / U, with a mass-flux verdict "
+          "beside it (docs/validation-studies.md, 'fluidized_bed: the bed's water velocity over "
+          "whole inflow periods'): its row and series were rerun.",
           ""]
