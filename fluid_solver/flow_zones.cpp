@@ -19,7 +19,8 @@ void check_box(const sph::Vec<D>& lo, const sph::Vec<D>& hi, const std::string& 
 }  // namespace
 
 template <int D>
-FlowZones<D>::FlowZones(const scene::WaterPhase& water, double dp, double h, double hold_until)
+FlowZones<D>::FlowZones(const scene::WaterPhase& water, double dp, double h, const Vec& gravity,
+                        double hold_until)
     : hold_until_(hold_until) {
   for (std::size_t i = 0; i < water.inflows.size(); ++i) {
     const scene::InflowZone& zone = water.inflows[i];
@@ -64,6 +65,17 @@ FlowZones<D>::FlowZones(const scene::WaterPhase& water, double dp, double h, dou
     check_box<D>(b.min, b.max, what);
     outflows_.push_back(b);
     outflow_start_.push_back(water.outflows[i].start_time);
+    Stagger st;
+    if (water.outflows[i].stagger > 0.0) {
+      int axes = 0;
+      for (int k = 0; k < D; ++k)
+        if (gravity[k] != 0.0) ++axes, st.axis = k;
+      if (axes != 1) throw std::invalid_argument(what + ".stagger: needs gravity along one axis");
+      st.up = gravity[st.axis] < 0.0 ? 1.0 : -1.0;
+      st.face = st.up > 0.0 ? b.min[st.axis] : -b.max[st.axis];
+      st.depth = water.outflows[i].stagger * dp;
+    }
+    outflow_stagger_.push_back(st);
   }
   step_.resize(inflows_.size());
   begin_step(0.0, 0.0);

@@ -19,10 +19,14 @@
 // limit). Zones must not straddle a periodic face.
 //
 // Outflow zone: free water particles inside the box [min, max] are removed (zone particles never
-// are). Inflow speeds are 0 during the damping stage (t < hold_until, sph/damping_stage.h),
-// whatever the ramp says.
+// are). With water.outflow[].stagger = S > 0, particle id k is removed only once its centre is
+// frac(k / golden ratio) S dp above the box's lower face along gravity, so that a water surface
+// rising into the box as one lattice row leaves one particle at a time: removing a whole row at
+// once drops the head of the water below by rho g dp in one step, a pressure pulse. Inflow speeds
+// are 0 during the damping stage (t < hold_until, sph/damping_stage.h), whatever the ramp says.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -43,7 +47,9 @@ class FlowZones {
   /// the wrong length, an empty box, a direction that is not a unit vector along one axis, or an
   /// inflow zone shorter along it than the kernel support 2h: the water just downstream must see
   /// a full kernel of zone particles behind it (a 1.3 dp zone let the fluidised bed drain).
-  FlowZones(const scene::WaterPhase& water, double dp, double h, double hold_until);
+  /// gravity: the outflows' stagger acts along its axis (needed only where a stagger is set).
+  FlowZones(const scene::WaterPhase& water, double dp, double h, const Vec& gravity,
+            double hold_until);
 
   std::size_t inflow_count() const { return inflows_.size(); }
   bool has_outflows() const { return !outflows_.empty(); }
@@ -56,11 +62,13 @@ class FlowZones {
       if (inside(inflows_[z].box, x)) return static_cast<int>(z);
     return -1;
   }
-  /// True if x lies in the closed box of an outflow zone.
-  /// True when x lies in an outflow zone that is active at `time` (its start_time reached).
-  bool in_outflow(const Vec& x, double time) const {
+  /// True when x lies in the closed box of an outflow zone that is active at `time` (its
+  /// start_time reached) and, where the zone has a stagger, the particle `id` is past its own
+  /// threshold above the box's lower face.
+  bool in_outflow(const Vec& x, std::int64_t id, double time) const {
     for (std::size_t z = 0; z < outflows_.size(); ++z)
-      if (time >= outflow_start_[z] && inside(outflows_[z], x)) return true;
+      if (time >= outflow_start_[z] && inside(outflows_[z], x) && outflow_stagger_[z].past(x, id))
+        return true;
     return false;
   }
 
@@ -114,6 +122,20 @@ class FlowZones {
   std::vector<Inflow> inflows_;
   std::vector<Box> outflows_;
   std::vector<double> outflow_start_;  ///< per outflow zone: start_time [s]
+  /// water.outflow[].stagger: particle `id` leaves once it is s(id) depth above the lower face.
+  struct Stagger {
+    int axis = 0;
+    double up = 1.0;     ///< +1: gravity along -axis
+    double face = 0.0;   ///< up x[axis] of the lower face
+    double depth = 0.0;  ///< stagger dp [m]; 0: none
+    bool past(const Vec& x, std::int64_t id) const {
+      if (depth == 0.0) return true;
+      // s(id) = frac(id / golden ratio): evenly spread over [0, 1) for any run of ids.
+      const double s = std::fmod(static_cast<double>(id) * 0.6180339887498949, 1.0);
+      return up * x[axis] - face >= s * depth;
+    }
+  };
+  std::vector<Stagger> outflow_stagger_;
   double hold_until_ = 0.0;
   std::vector<StepVelocities> step_;
   WaterParticles<D> born_;  ///< staging of the particles born in renew()

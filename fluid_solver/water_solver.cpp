@@ -43,7 +43,7 @@ WaterSolver<D>::WaterSolver(const scene::Scene& s)
       box_(sph::DomainBox<D>::from_scene(s, 2.0 * params_.h)),
       kernel_(s.run.kernel, params_.h, s.run.dp, s.run.kernel_gradient != "plain"),
       damping_(sph::DampingStage::from_scene(s)),
-      zones_(*s.water, params_.dp, params_.h, damping_.duration()),
+      zones_(*s.water, params_.dp, params_.h, params_.gravity, damping_.duration()),
       reservoirs_(*s.water, params_.gravity, params_.dp, params_.h, params_.eos),
       open_(*s.water, {params_.gravity, params_.h, params_.eos}, params_.dp, damping_.duration(),
             static_cast<int>(zones_.inflow_count())),
@@ -293,7 +293,7 @@ bool WaterSolver<D>::leaves(std::size_t a) const {
   const WaterParticles<D>& P = particles_;
   if (box_.outside(P.position[a])) return true;
   if (open_.owns(P.zone[a])) return open_.past_far_face(P.zone[a], P.position[a]);
-  return P.zone[a] < 0 && (zones_.in_outflow(P.position[a], scalars_.time) ||
+  return P.zone[a] < 0 && (zones_.in_outflow(P.position[a], P.id[a], scalars_.time) ||
                            reservoirs_.above_level(P.position[a], scalars_.time) ||
                            open_.above_level(P.position[a]));
 }
@@ -304,8 +304,8 @@ void WaterSolver<D>::remove_leaving_particles() {
   const auto leaving = [this](std::size_t a) { return leaves(a); };
   const auto removing = [this, &P](std::size_t a) {  // its momentum leaves with it
     const bool outflow = box_.outside(P.position[a]) ||
-                         zones_.in_outflow(P.position[a], scalars_.time) || open_.owns(P.zone[a]) ||
-                         open_.above_level(P.position[a]);
+                         zones_.in_outflow(P.position[a], P.id[a], scalars_.time) ||
+                         open_.owns(P.zone[a]) || open_.above_level(P.position[a]);
     book_[outflow ? kWaterOutflow : kWaterReservoir] -= P.mass[a] * P.velocity[a];
   };
   this->remove_free_particles_where(leaving, removing);

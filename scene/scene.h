@@ -86,6 +86,7 @@ struct InflowZone {
 struct OutflowZone {
   std::vector<double> min, max;  ///< the box [m]
   double start_time = 0.0;       ///< removes water from this time on [s]
+  double stagger = 0.0;          ///< removal spread over this many dp above the lower face
 };
 
 /// A constant-head reservoir ([[water.reservoir]]): holds the water surface inside the box at

@@ -60,6 +60,19 @@ void add_flow_zones(SceneSchema& s) {
                        .at_least(0)
                        .doc("The zone removes water from this time on (e.g. the sudden removal "
                             "of a water surcharge)."));
+  s.keys.push_back(
+      Key("water.outflow[].stagger", T::Float)
+          .fallback("0.0")
+          .at_least(0)
+          .doc("Spreads the removal of water rising into the box through its lower face (along "
+               "gravity) over this many particle spacings: a particle is removed once its centre "
+               "lies in the box and at least s stagger dp above that face, s in [0, 1) a fixed "
+               "fraction of its id (the golden-ratio sequence). A water surface rising through "
+               "the face as one lattice row then leaves one particle at a time instead of all at "
+               "once; a whole row at once drops the head of the water below by rho g dp in one "
+               "step, and that pressure step crosses the domain as a pulse "
+               "(docs/validation-studies.md, fluidized_bed). 0: at the face. Needs gravity along "
+               "one axis when > 0."));
 
   s.tables.push_back(
       {"water.reservoir[]", true, false,
@@ -291,6 +304,7 @@ void build_flow_zones(const toml::table& water, WaterPhase& w) {
       z.min = vector_of(t.get("min"));
       z.max = vector_of(t.get("max"));
       z.start_time = *t["start_time"].value<double>();
+      z.stagger = *t["stagger"].value<double>();
       w.outflows.push_back(std::move(z));
     }
   }

@@ -150,9 +150,10 @@ TEST(SeepageCases, FluidizedBedExpandsToThePaperPorosity) {
   // Shepard filter every 30 steps they crowded to 1.014 and moved at 0.985 Q/A).
   EXPECT_NEAR(c.volume_fill, 1.0, 0.03);
   // Issue 23: the water inside the bed moves at the superficial velocity Q / A within 1 %. The
-  // inflow hands over a row of particles every dp / U and each sends a pulse through the bed, so
-  // the check averages the observable bed_water_velocity over a whole period: measured 1.0022
-  // (0.9870 with the Shepard filter, which this bound rejects).
+  // water rises as lattice rows, one every dp / U, and their handover at the inflow and removal at
+  // the outflow send pulses through the bed, so the check averages the observable
+  // bed_water_velocity over a whole period: measured 1.0022 (0.9870 with the Shepard filter,
+  // which this bound rejects).
   ASSERT_TRUE(c.velocity_over_periods);
   EXPECT_NEAR(c.velocity_ratio, 1.0, 0.01);
   // The 0.2 % above Q / A is the water's compressibility: the zone hands over mass at

@@ -16,6 +16,7 @@ namespace porosph::water {
 namespace {
 
 using Vec2 = sph::Vec<2>;
+const Vec2 kGravity(0.0, -9.81);
 using testing::box;
 using testing::inflow;
 using testing::outflow;
@@ -28,14 +29,14 @@ TEST(FlowZones, GeometrySpeedsAndBadInput) {
   scene::OutflowZone later = outflow({2, 0}, {2.2, 0.1});
   later.start_time = 0.3;  // a zone that opens at 0.3 s
   w.outflows.push_back(later);
-  const FlowZones<2> zones(w, 0.01, 0.012, 0.15);  // damping stage until 0.15 s
+  const FlowZones<2> zones(w, 0.01, 0.012, kGravity, 0.15);  // damping stage until 0.15 s
   ASSERT_EQ(zones.inflow_count(), 1u);
   EXPECT_EQ(zones.inflow_at(Vec2(0.05, 0.02)), 0);
   EXPECT_EQ(zones.inflow_at(Vec2(0.15, 0.02)), -1);
-  EXPECT_TRUE(zones.in_outflow(Vec2(1.0, 0.1), 0.0));  // closed box
-  EXPECT_FALSE(zones.in_outflow(Vec2(0.99, 0.05), 0.0));
-  EXPECT_FALSE(zones.in_outflow(Vec2(2.1, 0.05), 0.29));  // not open yet
-  EXPECT_TRUE(zones.in_outflow(Vec2(2.1, 0.05), 0.3));
+  EXPECT_TRUE(zones.in_outflow(Vec2(1.0, 0.1), 0, 0.0));  // closed box
+  EXPECT_FALSE(zones.in_outflow(Vec2(0.99, 0.05), 0, 0.0));
+  EXPECT_FALSE(zones.in_outflow(Vec2(2.1, 0.05), 0, 0.29));  // not open yet
+  EXPECT_TRUE(zones.in_outflow(Vec2(2.1, 0.05), 0, 0.3));
   // The ramp starts at 0.1 s but the damping stage holds it at 0 until 0.15 s; then 2 (t - 0.1) /
   // 0.2 (exact in binary up to round-off).
   EXPECT_EQ(zones.speed(0, 0.12), 0.0);
@@ -44,7 +45,7 @@ TEST(FlowZones, GeometrySpeedsAndBadInput) {
   EXPECT_EQ(zones.velocity(0, 0.4)[1], 0.0);
 
   // Downstream face of a -x zone is x = 0: a particle moved past it reports 1, one inside 0.
-  FlowZones<2> moving(w, 0.01, 0.012, 0.0);
+  FlowZones<2> moving(w, 0.01, 0.012, kGravity, 0.0);
   moving.begin_step(1.0, 0.01);  // full speed 2: the step moves by 0.02
   Vec2 x(0.025, 0.02), v, v_previous;
   EXPECT_EQ(moving.move(0, x, v, v_previous, 0.01), 0);
@@ -54,17 +55,48 @@ TEST(FlowZones, GeometrySpeedsAndBadInput) {
 
   scene::WaterPhase diagonal;
   diagonal.inflows.push_back(inflow({0, 0}, {0.1, 0.1}, {0.6, 0.8}, 1.0));
-  EXPECT_THROW((FlowZones<2>(diagonal, 0.01, 0.012, 0.0)), std::invalid_argument);
+  EXPECT_THROW((FlowZones<2>(diagonal, 0.01, 0.012, kGravity, 0.0)), std::invalid_argument);
   scene::WaterPhase empty_box;
   empty_box.outflows.push_back(outflow({0, 0}, {0.1, 0.0}));
-  EXPECT_THROW((FlowZones<2>(empty_box, 0.01, 0.012, 0.0)), std::invalid_argument);
-  EXPECT_THROW((FlowZones<3>(w, 0.01, 0.012, 0.0)), std::invalid_argument);  // 2-component vectors
+  EXPECT_THROW((FlowZones<2>(empty_box, 0.01, 0.012, kGravity, 0.0)), std::invalid_argument);
+  EXPECT_THROW((FlowZones<3>(w, 0.01, 0.012, sph::Vec<3>(0, 0, -9.81), 0.0)),
+               std::invalid_argument);  // 2-component vectors
   // An inflow zone shorter along its direction than the kernel support 2h = 0.024 m.
   scene::WaterPhase shallow;
   shallow.inflows.push_back(inflow({0, 0}, {0.1, 0.02}, {0, 1}, 1.0));
-  EXPECT_THROW((FlowZones<2>(shallow, 0.01, 0.012, 0.0)), std::invalid_argument);
+  EXPECT_THROW((FlowZones<2>(shallow, 0.01, 0.012, kGravity, 0.0)), std::invalid_argument);
   shallow.inflows[0].max[1] = 0.024;
-  EXPECT_NO_THROW((FlowZones<2>(shallow, 0.01, 0.012, 0.0)));
+  EXPECT_NO_THROW((FlowZones<2>(shallow, 0.01, 0.012, kGravity, 0.0)));
+}
+
+// water.outflow[].stagger: a row rising through the lower face of the box leaves one particle at
+// a time. With stagger 1 and dp 0.01, particle id k leaves once it is frac(k / golden) dp above the
+// face: of 60 ids at half a spacing above it about half (the sequence's discrepancy is below 2 in
+// 60), all at a spacing, none below the face; ids 0 and 1 on their exact thresholds.
+TEST(FlowZones, StaggeredOutflowReleasesARowOneParticleAtATime) {
+  scene::WaterPhase w;
+  w.outflows.push_back(outflow({0, 0.1}, {0.6, 0.2}));
+  w.outflows[0].stagger = 1.0;
+  const FlowZones<2> zones(w, 0.01, 0.012, kGravity, 0.0);
+  int half = 0, full = 0, below = 0;
+  for (std::int64_t id = 0; id < 60; ++id) {
+    const double x = 0.005 + 0.01 * static_cast<double>(id);
+    half += zones.in_outflow(Vec2(x, 0.105), id, 0.0);
+    full += zones.in_outflow(Vec2(x, 0.11), id, 0.0);
+    below += zones.in_outflow(Vec2(x, 0.0999), id, 0.0);
+  }
+  EXPECT_NEAR(half, 30, 2);
+  EXPECT_EQ(full, 60);
+  EXPECT_EQ(below, 0);
+  EXPECT_TRUE(zones.in_outflow(Vec2(0.1, 0.1), 0, 0.0));      // s(0) = 0: at the face
+  EXPECT_FALSE(zones.in_outflow(Vec2(0.1, 0.1061), 1, 0.0));  // s(1) = 0.618
+  EXPECT_TRUE(zones.in_outflow(Vec2(0.1, 0.1062), 1, 0.0));
+  // Gravity along +y: the lower face is the box's max.
+  const FlowZones<2> upside_down(w, 0.01, 0.012, Vec2(0.0, 9.81), 0.0);
+  EXPECT_FALSE(upside_down.in_outflow(Vec2(0.1, 0.1939), 1, 0.0));
+  EXPECT_TRUE(upside_down.in_outflow(Vec2(0.1, 0.1938), 1, 0.0));
+  // Without gravity the face is undefined.
+  EXPECT_THROW((FlowZones<2>(w, 0.01, 0.012, Vec2(0.0, 0.0), 0.0)), std::invalid_argument);
 }
 
 /// Zone particles of a lone inflow zone [0, 0.4] x [0, 0.02]^(D-1) along +x (dp 0.01: 40 rows of

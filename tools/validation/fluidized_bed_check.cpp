@@ -116,12 +116,13 @@ double time_mean(const std::vector<double>& t, const std::vector<double>& y, dou
   return integral / (to - from);
 }
 
-/// The inflow hands over one row of particles every dp / U, and each handover sends a pulse
-/// through the bed, so a mean over snapshots depends on how many pulses the window happens to
-/// catch. From the observables bed_water_velocity, bed_water_density and inflow_water_mass
-/// (sampled every run.timeseries_interval), the verdicts are time means over the whole inflow
-/// periods that fit in the steady window (at least one), ending at the last row; their standard
-/// errors are those of the periods' means (0 with one period). No-op without those columns.
+/// The water rises as lattice rows, one every dp / U, and the inflow's handover of a row and the
+/// outflow's removal of one (without water.outflow[].stagger) send pulses through the bed, so a
+/// mean over snapshots depends on how many pulses the window happens to catch. From the observables
+/// bed_water_velocity, bed_water_density and inflow_water_mass (sampled every
+/// run.timeseries_interval), the verdicts are time means over the whole inflow periods that fit in
+/// the steady window (at least one), ending at the last row; their standard errors are those of the
+/// periods' means (0 with one period). No-op without those columns.
 void water_in_bed_over_periods(const std::string& run_dir, const TimeSeries& series, double dp,
                                int dimension, FluidizedBedCheck& out) {
   for (const char* name : {"bed_water_velocity", "bed_water_density", "inflow_water_mass"})

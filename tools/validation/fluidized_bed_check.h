@@ -48,8 +48,8 @@ struct FluidizedBedCheck {
   /// With the observables bed_water_velocity, bed_water_density and inflow_water_mass in
   /// timeseries.csv (cases/fluidized_bed/scene.toml), velocity_ratio (and its error) is the time
   /// mean over `whole_periods` inflow periods dp / U ending at the run's end (the inflow hands
-  /// over a row of particles once a period; docs/validation-studies.md), and the snapshot mean
-  /// above moves to snapshot_velocity_ratio.
+  /// over a row of particles, and the outflow takes one, once a period;
+  /// docs/validation-studies.md), and the snapshot mean above moves to snapshot_velocity_ratio.
   bool velocity_over_periods = false;
   double inflow_period = 0;  ///< dp / U [s]
   int whole_periods = 0;
