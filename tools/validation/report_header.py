@@ -74,5 +74,7 @@ HEADER = ["# Validation report", "",
           "12 mm), and the fluidised bed's velocity verdict is the time mean of an observable "
           "sampled every 0.002 s over whole inflow periods dp / U, with a mass-flux verdict "
           "beside it (docs/validation-studies.md, 'fluidized_bed: the bed's water velocity over "
-          "whole inflow periods'): its row and series were rerun.",
+          "whole inflow periods'): its row and series were rerun. The rockfill_q19_w100 row was "
+          "rerun on the current model to 100.2 s (session 33; B 0.37 m, before 0.33 m); the "
+          "other rockfill rows predate it.",
           ""]
