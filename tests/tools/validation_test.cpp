@@ -23,6 +23,19 @@ TEST(Validation, InterpolatesLinearlyAndRefusesToExtrapolate) {
 
 // A synthetic dam-break run whose front follows Z = 1 + 0.5 T exactly, against a two-point table:
 // the errors are known in closed form.
+// time_mean integrates the piecewise-linear series exactly: y = 2 t on uneven rows has the mean
+// (from + to) over [from, to], ends inside rows included; a step series gives the trapezoid's
+// share. standard_error_of_mean: samples 1, 2, 3 have spread 1, so 1 / sqrt(3).
+TEST(Validation, TimeMeanAndStandardErrorOfTheMean) {
+  const std::vector<double> t{0.0, 0.3, 1.0, 1.1, 2.0}, y{0.0, 0.6, 2.0, 2.2, 4.0};
+  EXPECT_NEAR(validation::time_mean(t, y, 0.0, 2.0), 2.0, 1e-14);
+  EXPECT_NEAR(validation::time_mean(t, y, 0.2, 1.05), 1.25, 1e-14);
+  const std::vector<double> step{0.0, 0.0, 1.0, 1.0, 1.0};  // 0 until 0.3, ramps to 1 at 1.0
+  EXPECT_NEAR(validation::time_mean(t, step, 0.0, 2.0), (0.5 * 0.7 + 1.0) / 2.0, 1e-14);
+  EXPECT_NEAR(validation::standard_error_of_mean(6.0, 14.0, 3), 1.0 / std::sqrt(3.0), 1e-14);
+  EXPECT_EQ(validation::standard_error_of_mean(2.0, 4.0, 1), 0.0);
+}
+
 TEST(Validation, DamBreakErrorOfAKnownFront) {
   const std::string dir = fresh_dir("validation-dam");
   const double a = 0.05715, dp = 0.001, g = 9.81;

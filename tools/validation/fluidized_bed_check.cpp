@@ -94,26 +94,10 @@ void water_in_bed(const std::string& run_dir, const nlohmann::json& run, Fluidiz
   if (snapshots == 0) throw std::runtime_error(run_dir + ": no water in the bed in the window");
   out.velocity_ratio = velocity / snapshots;
   out.window_snapshots = snapshots;
-  if (snapshots > 1) {
-    const double variance =
-        std::max(0.0, (velocity_squared - velocity * velocity / snapshots) / (snapshots - 1));
-    out.velocity_ratio_error = std::sqrt(variance / snapshots);
-  }
+  out.velocity_ratio_error = standard_error_of_mean(velocity, velocity_squared, snapshots);
   out.mass_flux_ratio = flux / snapshots;
   out.mass_flux_density_ratio = flux_density / snapshots;
   out.volume_fill = fill / snapshots;
-}
-
-/// Time mean of column y over [from, to] (trapezoids on the rows, the ends interpolated).
-double time_mean(const std::vector<double>& t, const std::vector<double>& y, double from,
-                 double to) {
-  double integral = 0.0;
-  for (std::size_t k = 1; k < t.size(); ++k) {
-    if (t[k] <= from || t[k - 1] >= to) continue;
-    const double t0 = std::max(t[k - 1], from), t1 = std::min(t[k], to);
-    integral += 0.5 * (interpolate(t, y, t0) + interpolate(t, y, t1)) * (t1 - t0);
-  }
-  return integral / (to - from);
 }
 
 /// The water rises as lattice rows, one every dp / U, and the inflow's handover of a row and the
@@ -150,15 +134,12 @@ void water_in_bed_over_periods(const std::string& run_dir, const TimeSeries& ser
     sum_v += ratio, sum_v2 += ratio * ratio;
     sum_flux += flux, sum_flux2 += flux * flux;
   }
-  const auto standard_error = [n](double sum, double sum2) {
-    return n > 1 ? std::sqrt(std::max(0.0, (sum2 - sum * sum / n) / (n - 1)) / n) : 0.0;
-  };
   out.snapshot_velocity_ratio = out.velocity_ratio;
   out.snapshot_velocity_ratio_error = out.velocity_ratio_error;
   out.velocity_ratio = sum_v / n;
-  out.velocity_ratio_error = standard_error(sum_v, sum_v2);
+  out.velocity_ratio_error = standard_error_of_mean(sum_v, sum_v2, n);
   out.period_mass_flux_ratio = sum_flux / n;
-  out.period_mass_flux_ratio_error = standard_error(sum_flux, sum_flux2);
+  out.period_mass_flux_ratio_error = standard_error_of_mean(sum_flux, sum_flux2, n);
   out.velocity_over_periods = true;
 }
 

@@ -1,5 +1,6 @@
 #include "tools/validation/run_directory.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -69,6 +70,27 @@ double interpolate(const std::vector<double>& x, const std::vector<double>& y, d
     }
   }
   return y.back();
+}
+
+double time_mean(const std::vector<double>& t, const std::vector<double>& y, double from,
+                 double to) {
+  double integral = 0.0;
+  for (std::size_t k = 1; k < t.size(); ++k) {
+    if (t[k] <= from || t[k - 1] >= to) continue;
+    const double span = t[k] - t[k - 1];
+    const auto at = [&](double s) {
+      return span > 0.0 ? y[k - 1] + (s - t[k - 1]) / span * (y[k] - y[k - 1]) : y[k];
+    };
+    const double t0 = std::max(t[k - 1], from), t1 = std::min(t[k], to);
+    integral += 0.5 * (at(t0) + at(t1)) * (t1 - t0);
+  }
+  return integral / (to - from);
+}
+
+double standard_error_of_mean(double sum, double sum_squared, int n) {
+  if (n < 2) return 0.0;
+  const double variance = std::max(0.0, (sum_squared - sum * sum / n) / (n - 1));
+  return std::sqrt(variance / n);
 }
 
 }  // namespace porosph::validation

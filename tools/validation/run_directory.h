@@ -25,5 +25,11 @@ TimeSeries read_csv(const std::string& path);
 
 /// Linear interpolation of y(x) at x0 (x ascending); NaN outside [x.front(), x.back()].
 double interpolate(const std::vector<double>& x, const std::vector<double>& y, double x0);
+/// Time mean of y(t) over [from, to] inside [t.front(), t.back()] (t ascending): trapezoids on the
+/// rows, y linear between them, the ends interpolated in their own interval.
+double time_mean(const std::vector<double>& t, const std::vector<double>& y, double from,
+                 double to);
+/// Standard error of the mean of n samples from their sum and sum of squares (0 for n < 2).
+double standard_error_of_mean(double sum, double sum_squared, int n);
 
 }  // namespace porosph::validation

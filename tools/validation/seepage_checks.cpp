@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include "porous/permeability.h"
 #include "porous/seepage_law.h"
@@ -62,16 +63,15 @@ DarcyColumnCheck check_darcy_column(const std::string& run_dir) {
   out.simulated = out.final_value;
   if (out.period_covered) {
     const double from = t.back() - out.period;
-    double integral = 0.0, low = 1e300, high = -1e300;
-    for (std::size_t k = 1; k < t.size(); ++k) {
+    std::vector<double> speed(q.size());
+    for (std::size_t k = 0; k < q.size(); ++k) speed[k] = std::abs(q[k]);
+    double low = std::abs(interpolate(t, q, from)), high = low;
+    for (std::size_t k = 0; k < t.size(); ++k) {
       if (t[k] <= from) continue;
-      const double t0 = std::max(t[k - 1], from);
-      const double q0 = std::abs(interpolate(t, q, t0)), q1 = std::abs(q[k]);
-      integral += 0.5 * (q0 + q1) * (t[k] - t0);
-      low = std::min({low, q0, q1});
-      high = std::max({high, q0, q1});
+      low = std::min(low, speed[k]);
+      high = std::max(high, speed[k]);
     }
-    out.period_mean = integral / out.period;
+    out.period_mean = time_mean(t, speed, from, t.back());
     out.period_swing = 0.5 * (high - low) / out.expected;
     out.simulated = out.period_mean;
   }

@@ -53,18 +53,6 @@ std::vector<double> upward_crossings(const std::vector<double>& t, const std::ve
   return crossings;
 }
 
-/// Time mean of u(t) (linear between samples) over [t0, t1].
-double time_mean(const std::vector<double>& t, const std::vector<double>& u, double t0, double t1) {
-  double integral = 0;
-  for (std::size_t i = 1; i < t.size(); ++i) {
-    const double a = std::max(t[i - 1], t0), b = std::min(t[i], t1);
-    if (b <= a) continue;
-    const double ua = interpolate(t, u, a), ub = interpolate(t, u, b);
-    integral += 0.5 * (ua + ub) * (b - a);
-  }
-  return integral / (t1 - t0);
-}
-
 double max_plastic_strain_at_end(const std::string& run_dir) {
   io::SnapshotReader reader(run_dir + "/soil.h5");
   const auto snapshots = reader.snapshots();
