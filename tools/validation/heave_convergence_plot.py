@@ -8,9 +8,10 @@ reaches the pile tip (the failure) and the experiment's failure time.
 
 Each RUN holds run.json and the validate_series.csv written above (docs/validation-studies.md).
 It also prints the advance of each run every 0.5 s (up to the shortest run's end) and, for three
-runs whose dp halves, the self-convergence order p = log2((a1 - a2) / (a2 - a3)) at each time
-(a1 coarsest): where p > 0 the advance converges there, where it is not a number (increments of
-opposite signs) or negative it does not.
+runs whose dp halves (whatever their cfl) or, at one dp, whose run.cfl halves, the order
+p = log2((a1 - a2) / (a2 - a3)) at each time (a1 coarsest): where p > 0 the advance converges
+there, where it is not a number (increments of opposite signs) or negative it does not. Curves
+are labelled with dp and, where the runs differ in it, run.cfl.
 """
 import math
 import json
@@ -31,13 +32,18 @@ def main(argv):
     out, runs = argv[1], argv[2:]
     fig, ax = plt.subplots(figsize=(6.5, 4))
     curves = []
+    parameter_sets = []
     for run in runs:
         with open(os.path.join(run, "run.json")) as f:
-            parameters = json.load(f)["parameters"]
+            parameter_sets.append(json.load(f)["parameters"])
+    cfls = {p["run"]["cfl"] for p in parameter_sets}
+    for run, parameters in zip(runs, parameter_sets):
         s = read_csv(os.path.join(run, "validate_series.csv"))
         advance = s["gravel_bottom"][0] - s["gravel_bottom"]
-        curves.append((parameters["run"]["dp"], list(s["t"]), list(advance)))
-        line, = ax.plot(s["t"], 1000 * advance, label=f"dp {1000 * parameters['run']['dp']:g} mm")
+        dp, cfl = parameters["run"]["dp"], parameters["run"]["cfl"]
+        curves.append((dp, cfl, list(s["t"]), list(advance)))
+        label = f"dp {1000 * dp:g} mm" + (f", cfl {cfl:g}" if len(cfls) > 1 else "")
+        line, = ax.plot(s["t"], 1000 * advance, label=label)
         tip = [w["min"][1] for w in parameters["walls"] if w.get("label") == "sheet_pile"]
         if tip:  # the failure: this run's gravel bottom at the pile tip (its lattice's start)
             ax.axhline(1000 * (s["gravel_bottom"][0] - tip[0]), color=line.get_color(), ls=":")
@@ -49,7 +55,7 @@ def main(argv):
     fig.tight_layout()
     fig.savefig(out, dpi=110)
     print(out)
-    print_orders(sorted(curves, key=lambda c: -c[0]))
+    print_orders(sorted(curves, key=lambda c: (-c[0], -c[1])))
 
 
 def at(t, ts, values):
@@ -62,16 +68,23 @@ def at(t, ts, values):
 
 
 def print_orders(curves):
-    """The advance per run (coarse to fine) every 0.5 s, and the self-convergence order."""
-    end = min(c[1][-1] for c in curves)
-    halving = len(curves) == 3 and all(
-        abs(curves[k][0] / curves[k + 1][0] - 2) < 1e-6 for k in range(2))
-    print("t [s]  " + "  ".join(f"dp {1000 * c[0]:g} mm" for c in curves)
+    """The advance per run (coarse to fine) every 0.5 s, and the self-convergence order.
+
+    curves: (dp, cfl, times, advances), coarse first."""
+    end = min(c[2][-1] for c in curves)
+
+    def halves(i):  # curves[0..2] halve parameter i (0: dp, 1: cfl) from one to the next
+        return len(curves) == 3 and all(
+            abs(curves[k][i] / curves[k + 1][i] - 2) < 1e-6 for k in range(2))
+
+    one_dp = len({c[0] for c in curves}) == 1
+    halving = halves(0) or (one_dp and halves(1))
+    print("t [s]  " + "  ".join(f"{f'dp {1000 * c[0]:g} mm cfl {c[1]:g}':>18}" for c in curves)
           + ("  order p" if halving else ""))
     t = 0.5
     while t <= end + 1e-9:
-        a = [1000 * at(t, c[1], c[2]) for c in curves]
-        line = f"{t:5.1f}  " + "  ".join(f"{x:8.1f}" for x in a)
+        a = [1000 * at(t, c[2], c[3]) for c in curves]
+        line = f"{t:5.1f}  " + "  ".join(f"{x:18.1f}" for x in a)
         if halving:
             d1, d2 = a[0] - a[1], a[1] - a[2]
             p = math.log2(d1 / d2) if d1 * d2 > 0 else math.nan

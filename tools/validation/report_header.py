@@ -75,6 +75,11 @@ HEADER = ["# Validation report", "",
           "sampled every 0.002 s over whole inflow periods dp / U, with a mass-flux verdict "
           "beside it (docs/validation-studies.md, 'fluidized_bed: the bed's water velocity over "
           "whole inflow periods'): its row and series were rerun. The rockfill_q19_w100 row was "
-          "rerun on the current model to 100.2 s (session 33; B 0.37 m, before 0.33 m); the "
-          "other rockfill rows predate it.",
+          "rerun on the current model to 100.2 s (session 33; B 0.37 m, before 0.33 m), and "
+          "its Q = 30.45 l/s partner rockfill_q30_w100 to 95 s (session 34; B 0.77 m, before "
+          "0.55 m); the other rockfill rows predate them. The heave's coarse levels carry a "
+          "larger time step at the scene's cfl 0.2 (dt 3.7e-5 / 1.9e-5 / 9.3e-6 s at dp 10 / "
+          "5 / 2.5 mm): at one dt, 9.3e-6 s, no level fails by 6 s and the gravel arrests at "
+          "every level (docs/validation-studies.md, 'Heave: the coarse levels' late advance "
+          "and failure are the time step'; session 34).",
           ""]
