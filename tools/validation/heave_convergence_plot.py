@@ -17,6 +17,7 @@ import math
 import json
 import os
 import sys
+from collections import namedtuple
 
 import matplotlib
 
@@ -24,6 +25,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from case_plots import read_csv  # noqa: E402
+
+Curve = namedtuple("Curve", "dp cfl t advance")  # one run: its dp, run.cfl and advance [m] over t
 
 
 def main(argv):
@@ -41,7 +44,7 @@ def main(argv):
         s = read_csv(os.path.join(run, "validate_series.csv"))
         advance = s["gravel_bottom"][0] - s["gravel_bottom"]
         dp, cfl = parameters["run"]["dp"], parameters["run"]["cfl"]
-        curves.append((dp, cfl, list(s["t"]), list(advance)))
+        curves.append(Curve(dp, cfl, list(s["t"]), list(advance)))
         label = f"dp {1000 * dp:g} mm" + (f", cfl {cfl:g}" if len(cfls) > 1 else "")
         line, = ax.plot(s["t"], 1000 * advance, label=label)
         tip = [w["min"][1] for w in parameters["walls"] if w.get("label") == "sheet_pile"]
@@ -55,7 +58,7 @@ def main(argv):
     fig.tight_layout()
     fig.savefig(out, dpi=110)
     print(out)
-    print_orders(sorted(curves, key=lambda c: (-c[0], -c[1])))
+    print_orders(sorted(curves, key=lambda c: (-c.dp, -c.cfl)))
 
 
 def at(t, ts, values):
@@ -70,20 +73,20 @@ def at(t, ts, values):
 def print_orders(curves):
     """The advance per run (coarse to fine) every 0.5 s, and the self-convergence order.
 
-    curves: (dp, cfl, times, advances), coarse first."""
-    end = min(c[2][-1] for c in curves)
+    curves: Curve per run, coarse first."""
+    end = min(c.t[-1] for c in curves)
 
-    def halves(i):  # curves[0..2] halve parameter i (0: dp, 1: cfl) from one to the next
-        return len(curves) == 3 and all(
-            abs(curves[k][i] / curves[k + 1][i] - 2) < 1e-6 for k in range(2))
+    def halves(field):  # the three curves halve this field from one to the next
+        values = [getattr(c, field) for c in curves]
+        return len(values) == 3 and all(abs(values[k] / values[k + 1] - 2) < 1e-6 for k in range(2))
 
-    one_dp = len({c[0] for c in curves}) == 1
-    halving = halves(0) or (one_dp and halves(1))
-    print("t [s]  " + "  ".join(f"{f'dp {1000 * c[0]:g} mm cfl {c[1]:g}':>18}" for c in curves)
+    one_dp = len({c.dp for c in curves}) == 1
+    halving = halves("dp") or (one_dp and halves("cfl"))
+    print("t [s]  " + "  ".join(f"{f'dp {1000 * c.dp:g} mm cfl {c.cfl:g}':>18}" for c in curves)
           + ("  order p" if halving else ""))
     t = 0.5
     while t <= end + 1e-9:
-        a = [1000 * at(t, c[2], c[3]) for c in curves]
+        a = [1000 * at(t, c.t, c.advance) for c in curves]
         line = f"{t:5.1f}  " + "  ".join(f"{x:18.1f}" for x in a)
         if halving:
             d1, d2 = a[0] - a[1], a[1] - a[2]
