@@ -2,7 +2,7 @@
 """tools/validation/previous_report.py: what `report.py --only` keeps from an earlier report.
 
 The rows kept for a case must come from the summary table only (a B-against-q or Fig. 8 row of
-the same case name must not reappear there), and the B-against-q rows must be read back with the
+the same case name, or a row of the opening's model-version table, must not reappear there), and the B-against-q rows must be read back with the
 spacing of their dp column or, in reports written before that column, of the section's text."""
 import os
 import sys
@@ -13,6 +13,10 @@ sys.path.insert(0, os.path.join(os.environ["POROSPH_SOURCE_DIR"], "tools", "vali
 from previous_report import previous_report, previous_width_rows  # noqa: E402
 
 SUMMARY = """# Validation report
+
+| rows | last run | later model changes |
+| --- | --- | --- |
+| rockfill_q19 | 2026-12-01 | all since |
 
 | case | quantity | PoroSPH | reference | error | target | verdict | particles | steps | wall time |
 | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |

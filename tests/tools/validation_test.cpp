@@ -117,6 +117,30 @@ TEST(Validation, RockfillBIsMeasuredFromTheToeToTheMostUpstreamMovedSlopeParticl
   EXPECT_TRUE(std::isnan(validation::lowest_in_band(s, 1, 0.0, 3.0)));
 }
 
+// The heave's bulk measures on five particles (dp 0.01 m): sand (material 0) left of the pile's
+// pit face x = -0.005 counts dp^2 each, free only (the fixed one does not); the gravel
+// (material 1) settlement averages -u_y over the free particles that STARTED in the band
+// [0.005, 0.025], wherever they are now (the one that moved out of the band at x = 0.04 counts,
+// the one that moved into it from x0 = 0.05 does not).
+TEST(Validation, HeaveBulkMeasuresCountTheSandInThePitAndTheGravelThatStartedBesideThePile) {
+  validation::SoilParticles2D s;
+  auto add = [&](double x0, double y0, double ux, double uy, bool fixed, std::int64_t material) {
+    s.position.insert(s.position.end(), {x0 + ux, y0 + uy});
+    s.displacement.insert(s.displacement.end(), {ux, uy});
+    s.fixed.push_back(fixed);
+    s.material.push_back(material);
+  };
+  add(0.00, 0.02, -0.02, 0.01, false, 0);   // sand now at x = -0.02: in the pit
+  add(-0.10, 0.05, 0.0, 0.0, true, 0);      // fixed: never counted
+  add(-0.20, 0.05, 0.0, 0.0, false, 0);     // sand in the pit from the start
+  add(0.01, 0.10, 0.03, -0.004, false, 1);  // started in the band, now at x = 0.04
+  add(0.05, 0.10, -0.03, -0.1, false, 1);   // moved into the band: not counted
+  add(0.02, 0.12, 0.0, -0.002, false, 1);   // in the band
+  EXPECT_NEAR(validation::free_area_left_of(s, 0, -0.005, 0.01), 2e-4, 1e-15);
+  EXPECT_NEAR(validation::mean_settlement(s, 1, 0.005, 0.025), 0.003, 1e-12);
+  EXPECT_TRUE(std::isnan(validation::mean_settlement(s, 0, 0.3, 0.4)));
+}
+
 // The bulk front of a collapsed deposit: three rows (15 mm) up to x = 0.1 m, then single particles
 // on the floor out to 0.2 m, and a fixed particle far out. With dp 5 mm and a minimum thickness of
 // 10 mm the front is the far edge of the last thick column, 0.1 m; the single particles (5 mm

@@ -101,6 +101,28 @@ double lowest_in_band(const SoilParticles2D& soil, std::int64_t material, double
   return lowest;
 }
 
+double free_area_left_of(const SoilParticles2D& soil, std::int64_t material, double x_max,
+                         double dp) {
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < soil.size(); ++i)
+    if (!soil.fixed[i] && soil.material[i] == material && soil.position[2 * i] < x_max) ++count;
+  return static_cast<double>(count) * dp * dp;
+}
+
+double mean_settlement(const SoilParticles2D& soil, std::int64_t material, double x0_lo,
+                       double x0_hi) {
+  double sum = 0;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < soil.size(); ++i) {
+    if (soil.fixed[i] || soil.material[i] != material) continue;
+    const double x0 = soil.position[2 * i] - soil.displacement[2 * i];
+    if (x0 < x0_lo || x0 > x0_hi) continue;
+    sum -= soil.displacement[2 * i + 1];
+    ++count;
+  }
+  return count ? sum / static_cast<double>(count) : kNaN;
+}
+
 RockfillCheck check_rockfill(const std::string& run_dir) {
   const auto run = read_run_json(run_dir);
   const auto& p = run.at("parameters");
@@ -193,11 +215,15 @@ HeaveCheck check_heave(const std::string& run_dir) {
     if (wall.value("label", "") != "sheet_pile") continue;
     c.pile_tip = wall.at("min").at(1).get<double>();
     c.pile_face = wall.at("max").at(0).get<double>();
+    c.pile_pit_face = wall.at("min").at(0).get<double>();
     found = true;
   }
   if (!found) throw std::runtime_error(run_dir + "/run.json: no wall labelled 'sheet_pile'");
   const int gravel = material_index(soil, "gravel");
+  const int sand = material_index(soil, "sand");
+  const double dp = p.at("run").at("dp").get<double>();
   const double band = 0.02;  // next to the pile: within 2 cm of its upstream face
+  double sand_in_pit_at_start = kNaN;
 
   io::SnapshotReader reader(run_dir + "/soil.h5");
   const auto snapshots = reader.snapshots();
@@ -209,6 +235,10 @@ HeaveCheck check_heave(const std::string& run_dir) {
     if (c.times.empty()) c.gravel_top_of_sand = bottom;
     c.times.push_back(t);
     c.gravel_bottom.push_back(bottom);
+    const double sand_in_pit = free_area_left_of(s, sand, c.pile_pit_face, dp);
+    if (c.sand_crossed.empty()) sand_in_pit_at_start = sand_in_pit;
+    c.sand_crossed.push_back(sand_in_pit - sand_in_pit_at_start);
+    c.gravel_settlement.push_back(mean_settlement(s, gravel, c.pile_face, c.pile_face + band));
     if (c.failure_time < 0 && t >= 0 && bottom <= c.pile_tip) c.failure_time = t;
     c.end_time = t;
   }

@@ -71,16 +71,37 @@ RockfillCheck check_rockfill(const std::string& run_dir);
 /// Hydraulic heave run. Failure: the first snapshot at which the bottom of the gravel within
 /// 2 cm of the pile's upstream face has sunk to the pile tip, counted from the end of the damping
 /// stage. Head: upstream_level - downstream_level of timeseries.csv.
+///
+/// The failure follows one particle (the lowest gravel particle in the band), whose depth jumps by
+/// a particle when another one becomes the lowest. Two bulk measures of the same mechanism, for
+/// self-convergence (no experiment reports them), sum over many particles:
+/// - sand_crossed: the sand that the seepage has carried under the pile into the pit, the free
+///   sand area (dp^2 per particle, per metre of flume) left of the pile's pit-side face less that
+///   area in the first snapshot;
+/// - gravel_settlement: the mean downward displacement (displacement field, since t = 0) of the
+///   free gravel particles that started in the band beside the pile (x0 = x - u_x).
 struct HeaveCheck {
   double damping_end = 0, pile_tip = 0, pile_face = 0, gravel_top_of_sand = 0;
-  std::vector<double> times;             ///< snapshot times [s] (from the end of the damping stage)
-  std::vector<double> gravel_bottom;     ///< lowest gravel particle next to the pile [m]
-  std::vector<double> head_times, head;  ///< overall head [m] vs time from the damping end
+  double pile_pit_face = 0;           ///< x of the pile's face towards the pit [m]
+  std::vector<double> times;          ///< snapshot times [s] (from the end of the damping stage)
+  std::vector<double> gravel_bottom;  ///< lowest gravel particle next to the pile [m]
+  std::vector<double> sand_crossed;   ///< [m^2 per m], see above
+  std::vector<double> gravel_settlement;  ///< [m], see above
+  std::vector<double> head_times, head;   ///< overall head [m] vs time from the damping end
   double failure_time = -1;  ///< [s] after the damping stage; < 0: no failure in the run
   double head_at_start = 0, head_at_failure = 0;
   double end_time = 0;
 };
 
 HeaveCheck check_heave(const std::string& run_dir);
+
+/// Area (dp^2 per particle) of the free particles of `material` left of x_max [m^2 per m].
+double free_area_left_of(const SoilParticles2D& soil, std::int64_t material, double x_max,
+                         double dp);
+
+/// Mean of -u_y over the free particles of `material` whose initial x0 = x - u_x lies in
+/// [x0_lo, x0_hi] (NaN when there is none) [m].
+double mean_settlement(const SoilParticles2D& soil, std::int64_t material, double x0_lo,
+                       double x0_hi);
 
 }  // namespace porosph::validation

@@ -20,9 +20,16 @@ def previous_report(path):
     with open(path) as f:
         text = f.read()
     blocks = re.split(r"\n(?=## )", text)  # the summary table, then one block per section
+    in_summary = False  # the opening's other tables (the model version of the rows) are prose
     for line in blocks[0].splitlines():
+        if line.startswith("| case |"):
+            in_summary = True
+            continue
+        if not line.startswith("| "):
+            in_summary = False
+            continue
         cells = line.split(" | ")
-        if line.startswith("| ") and len(cells) > 2 and not line.startswith(("| case", "| ---")):
+        if in_summary and len(cells) > 2 and not line.startswith("| ---"):
             rows.setdefault(cells[0][2:].strip(), []).append(line)
     for block in blocks[1:]:
         title = block.splitlines()[0]

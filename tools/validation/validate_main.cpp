@@ -19,14 +19,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 
 #include "tools/validation/consolidation_report.h"
 #include "tools/validation/dam_break_check.h"
-#include "tools/validation/dam_case_checks.h"
+#include "tools/validation/dam_case_reports.h"
 #include "tools/validation/fluidized_bed_check.h"
 #include "tools/validation/mandel_check.h"
 #include "tools/validation/seepage_checks.h"
+#include "tools/validation/series_csv.h"
 #include "tools/validation/soil_checks.h"
 #include "tools/validation/summary_line.h"
 #include "tools/validation/verification_report.h"
@@ -38,6 +38,9 @@
 namespace {
 
 using porosph::validation::print_summary;
+using porosph::validation::report_heave;
+using porosph::validation::report_rockfill;
+using porosph::validation::write_series;
 constexpr auto* fmt = &porosph::validation::format_value;
 
 int report_soil_column(const porosph::validation::SoilColumnCheck& c) {
@@ -195,94 +198,6 @@ int report_fluidized_bed(const porosph::validation::FluidizedBedCheck& c) {
                   "1 (steady mass balance)", fmt("%+.3f %%", 100 * (c.period_mass_flux_ratio - 1)),
                   "0.1 %", std::abs(c.period_mass_flux_ratio - 1) <= 1e-3);
   return c.porosity_in_target && c.onset_in_target ? 0 : 1;
-}
-
-/// Writes columns of equal length as CSV (the report tool plots them); nothing when path is empty.
-void write_series(const std::string& path, const std::vector<std::string>& names,
-                  const std::vector<const std::vector<double>*>& columns) {
-  if (path.empty()) return;
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write " + path);
-  for (std::size_t k = 0; k < names.size(); ++k) out << (k ? "," : "") << names[k];
-  out << "\n";
-  for (std::size_t i = 0; i < columns[0]->size(); ++i) {
-    for (std::size_t k = 0; k < columns.size(); ++k) out << (k ? "," : "") << (*columns[k])[i];
-    out << "\n";
-  }
-}
-
-int report_rockfill(const porosph::validation::RockfillCheck& c, const std::string& series) {
-  std::printf(
-      "rockfill_overtopping at t = %.2f s: Q = %.2f l/s, q = Q / W = %.3e m^2/s (flume width W = "
-      "%.2f m"
-      " = cross_section / sheet), %zu soil particles, dp %.3f m, toe x = %.3f m\n",
-      c.time, 1e3 * c.flow_rate, c.discharge_per_metre, c.flume_width, c.particles, c.dp, c.x_toe);
-  for (int k = 0; k < 3; ++k) {
-    std::printf("B (moved > %.1f mm = %.1f D15): wet particles %.3f m, all particles %.3f m\n",
-                1e3 * c.thresholds[k], c.thresholds[k] / c.d15, c.b_wet[k], c.b[k]);
-  }
-  const double b = c.b_wet[1];
-  const std::size_t n = c.times.size();
-  if (n > 10) {
-    std::printf(
-        "B (wet, D15) over the run: %.3f m at t = %.1f s, %.3f m at t = %.1f s, %.3f at the end\n",
-        c.b_wet_history[n / 2], c.times[n / 2], c.b_wet_history[(9 * n) / 10],
-        c.times[(9 * n) / 10], b);
-  }
-  std::printf("seepage (eq. 13, initial porosity): a = %.4f s/m, b = %.3f s^2/m^2\n", c.seepage_a,
-              c.seepage_b);
-  for (std::size_t k = 0; k < c.levels.size(); ++k) {
-    std::printf(
-        "steady water level %s (x = %.2f m): %.3f m; Dupuit-Forchheimer %.3f m (exit at the toe)\n",
-        c.level_names[k].c_str(), c.level_x[k], c.levels[k], c.level_dupuit[k]);
-  }
-  write_series(series, {"t", "B_wet", "B_all"}, {&c.times, &c.b_wet_history, &c.b_history});
-  if (!series.empty()) {  // the reference water table beside it: SERIES_dupuit.csv
-    const auto stem = series.substr(0, series.rfind(".csv"));
-    write_series(stem + "_dupuit.csv", {"x", "h"}, {&c.dupuit_x, &c.dupuit_h});
-  }
-  if (c.b_experiment < 0) {
-    std::printf("no experiment for this flow rate\n");
-    print_summary("B parameter (wet, D15)", fmt("%.3f m", b), "none for this Q", "-", "-", -1);
-    return 0;
-  }
-  const double error = (b - c.b_experiment) / c.b_experiment;
-  std::printf("B = %.3f m vs experiment %.2f m: error %+.1f%% (target 10%%; paper's SPH %.3f m)\n",
-              b, c.b_experiment, 100 * error, c.b_paper_sph);
-  print_summary(fmt("B parameter (wet, D15), Q = %.2f l/s", 1e3 * c.flow_rate), fmt("%.3f m", b),
-                fmt("%.2f m (experiment)", c.b_experiment), fmt("%+.1f %%", 100 * error), "10 %",
-                std::abs(error) <= 0.10);
-  return std::abs(error) <= 0.10 ? 0 : 1;
-}
-
-int report_heave(const porosph::validation::HeaveCheck& c, const std::string& series) {
-  std::printf(
-      "hydraulic_heave: damping ends at %.3f s (times below are counted from there), pile tip y ="
-      " %.3f m\n%8s %14s %12s\n",
-      c.damping_end, c.pile_tip, "t[s]", "gravel_bottom", "advance[m]");
-  for (std::size_t i = 0; i < c.times.size(); i += 10) {
-    std::printf("%8.2f %14.4f %12.4f\n", c.times[i], c.gravel_bottom[i],
-                c.gravel_top_of_sand - c.gravel_bottom[i]);
-  }
-  std::printf("overall head (upstream - downstream level): %.4f m at the start\n", c.head_at_start);
-  write_series(series, {"t", "gravel_bottom"}, {&c.times, &c.gravel_bottom});
-  if (c.failure_time < 0) {
-    std::printf(
-        "no complete failure by t = %.2f s (the gravel next to the pile never reached the"
-        " pile tip); experiment 4.4 s\n",
-        c.end_time);
-    print_summary("time of complete failure", fmt("none by %.2f s", c.end_time),
-                  "4.4 s (experiment)", "-", "10 %", 0);
-    return 1;
-  }
-  const double error = (c.failure_time - 4.4) / 4.4;
-  std::printf(
-      "complete failure (gravel next to the pile at the pile tip) at t = %.2f s, head %.4f m;"
-      " experiment 4.4 s: error %+.1f%% (target 10%%)\n",
-      c.failure_time, c.head_at_failure, 100 * error);
-  print_summary("time of complete failure", fmt("%.2f s", c.failure_time), "4.4 s (experiment)",
-                fmt("%+.1f %%", 100 * error), "10 %", std::abs(error) <= 0.10);
-  return std::abs(error) <= 0.10 ? 0 : 1;
 }
 
 }  // namespace
