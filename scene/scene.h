@@ -109,6 +109,9 @@ struct CouplingSettings {
   double submerged_saturation = 0.8;  ///< water fraction from which soil is submerged
   double wet_saturation = 0.1;        ///< water fraction from which soil is wet
   bool implicit_drag = true;          ///< the drag's rate goes to the solvers (implicit drag)
+  /// "backward_euler" | "exponential": the implicit drag's weights over the step
+  /// (coupler/interaction/drag_step_weights.h)
+  std::string drag_step = "backward_euler";
   /// "renormalised" (by the wall's share of the support; coupler/interaction/wall_kernel_share.h)
   /// | "truncated" (the soil sums as they are)
   std::string drag_at_walls = "renormalised";
@@ -229,6 +232,8 @@ struct SoilPhase {
   /// "linear": wall particles continue each soil neighbour's stress with its gradient |
   /// "weight": with the weight, isotropically (soil_solver/wall_stress_continuation.h)
   std::string wall_stress_continuation = "weight";
+  /// "euler" or "modified_euler": the stress update's time step (soil_solver/stress_update.h)
+  std::string stress_integration = "euler";
   double damping_coefficient = 0.02;  ///< D = coefficient sqrt(E / (rho h^2))
   int stress_filter_every = 0;        ///< stress filter every N steps; 0: off
   std::string stress_filter = "mls";  ///< its weights: "shepard" | "mls"

@@ -156,6 +156,16 @@ void add_coupling(SceneSchema& s) {
                "momentum-conserving whatever the drag's relaxation time; false: the paper's "
                "explicit drag at the start of the step."));
   s.keys.push_back(
+      Key("coupling.drag_step", T::String)
+          .fallback("\"backward_euler\"")
+          .one_of({"backward_euler", "exponential"})
+          .doc("How the implicit drag weighs a pair over the step "
+               "(coupler/interaction/drag_step_weights.h, docs/coupling.md). backward_euler: the "
+               "drag at the predicted relative velocity over 1 + lambda dt, first order in dt; "
+               "exponential: the exact mean of the linearised pair over the step, f(v^n) phi + "
+               "(f(v*) - f(v^n)) psi, second order; both keep a steady state exactly and are "
+               "stable whatever lambda dt."));
+  s.keys.push_back(
       Key("coupling.drag_at_walls", T::String)
           .fallback("\"renormalised\"")
           .one_of({"truncated", "renormalised"})
@@ -316,6 +326,7 @@ CouplingSettings build_coupling(const toml::table& root) {
     c.submerged_saturation = *(*t)["submerged_saturation"].value<double>();
     c.wet_saturation = *(*t)["wet_saturation"].value<double>();
     c.implicit_drag = *(*t)["implicit_drag"].value<bool>();
+    c.drag_step = *(*t)["drag_step"].value<std::string>();
     c.drag_at_walls = *(*t)["drag_at_walls"].value<std::string>();
   }
   return c;

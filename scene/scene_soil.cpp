@@ -143,6 +143,7 @@ SoilPhase build_soil_phase(const toml::table& soil) {
   p.thin_walls = text_of(soil, "thin_walls");
   p.wall_stress = text_of(soil, "wall_stress");
   p.wall_stress_continuation = text_of(soil, "wall_stress_continuation");
+  p.stress_integration = text_of(soil, "stress_integration");
   p.alpha = *soil["alpha"].value<double>();
   p.beta = *soil["beta"].value<double>();
   p.artificial_stress_epsilon = *soil["artificial_stress_epsilon"].value<double>();

@@ -61,10 +61,19 @@ void add_soil_terms(std::vector<TermSpec>& t) {
                         "Elastic stress rate with the Jaumann rotation (eq. 6); "
                         "soil_solver/jaumann_rate.h.",
                         "always", always));
-  t.push_back(soil_term("drucker_prager_return",
-                        "Return to the Drucker-Prager cone (eq. 8-12); "
-                        "soil_solver/drucker_prager.h, stress_update.h.",
-                        "always", always));
+  t.push_back(soil_term(
+      "drucker_prager_return",
+      "Return to the Drucker-Prager cone (eq. 8-12); soil_solver/drucker_prager.h, "
+      "stress_update.h.",
+      "always", always,
+      {Key("soil.stress_integration", T::String)
+           .fallback("\"euler\"")
+           .one_of({"euler", "modified_euler"})
+           .doc("The stress update's step at the step's strain rate and spin. euler: the rate "
+                "(eq. 6 + 12a) at the old stress, first order in dt; modified_euler: its mean at "
+                "the old and the Euler-predicted stress (Heun; Sloan et al. 2001 without "
+                "substeps), second order, one more rate evaluation per particle (docs/soil.md, "
+                "Time integration).")}));
   t.push_back(soil_term("artificial_viscosity",
                         "Monaghan (1992) artificial viscosity between soil particles; "
                         "soil_solver/soil_artificial_viscosity.h.",

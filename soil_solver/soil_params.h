@@ -62,6 +62,9 @@ struct SoilParams : sph::ParticleSpacing {  // dp, h, volume
   /// soil.wall_stress_continuation = "linear": wall particles continue each soil neighbour's stress
   /// with its gradient (wall_stress_continuation.h); false: with the weight, isotropically.
   bool linear_wall_stress = false;
+  /// soil.stress_integration = "modified_euler": update_stress_modified_euler() (stress_update.h);
+  /// false: update_stress(), forward Euler.
+  bool modified_euler_stress = false;
   double damping_duration = 0.0;      ///< [s]; 0: no damping stage
   double damping_coefficient = 0.02;  ///< D = coefficient sqrt(E / (rho h^2))
   double cfl = 0.2, c_a = 0.25;
@@ -100,6 +103,9 @@ struct SoilParams : sph::ParticleSpacing {  // dp, h, volume
     p.two_sided_thin_walls = on("thin_walls_two_sided");
     p.wall_images = on("wall_images");
     p.linear_wall_stress = on("wall_stress_linear_continuation");
+    p.modified_euler_stress =
+        scene::checked_choice("soil.stress_integration", soil.stress_integration,
+                              {"euler", "modified_euler"}) == "modified_euler";
     p.damping_duration = on("damping_stage") ? soil.damping_duration : 0.0;
     p.damping_coefficient = soil.damping_coefficient;
     p.cfl = s.run.cfl;

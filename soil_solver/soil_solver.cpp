@@ -296,7 +296,10 @@ void SoilSolver<D>::update_stresses(double dt) {
     const Material& model = m.current_model(P.wet[i] != 0);
     const Eigen::Matrix3d& grad_v = P.velocity_gradient[i];
     PlasticState plastic{P.plastic_strain[i], false};
-    P.stress[i] = update_stress(model, P.stress[i], strain_rate(grad_v), spin(grad_v), dt, plastic);
+    const Eigen::Matrix3d d = strain_rate(grad_v), w = spin(grad_v);
+    P.stress[i] = params_.modified_euler_stress
+                      ? update_stress_modified_euler(model, P.stress[i], d, w, dt, plastic)
+                      : update_stress(model, P.stress[i], d, w, dt, plastic);
     P.plastic_strain[i] = plastic.plastic_multiplier;
   }
 }

@@ -1,7 +1,9 @@
 // The second pass of the soil-water interaction (SoilWaterSums, soil_water_sums.h), once the
 // step's dt is known: the pairwise implicit drag of soil_water_interaction.h,
 //   F_ia = V_a V_i W_ia f(v*_a - v*_i) / (1 + dt (lambda_a + lambda_i))      (force on soil i),
-// over the pairs the first pass kept (soil index and W), with the rates lambda it summed.
+// over the pairs the first pass kept (soil index and W), with the rates lambda it summed
+// (coupling.drag_step = "backward_euler"), or with the exponential step's weights of
+// drag_step_weights.h on f(v^n) and f(v*) - f(v^n) ("exponential").
 #pragma once
 
 #include "coupler/interaction/soil_water_sums.h"
@@ -16,6 +18,10 @@ void SoilWaterSums<D, Kernel>::implicit_drag(const coupling::StepState& water,
   const std::size_t n_soil = grid_.soil_size();
   predict(water, dt, water_predicted_);
   predict(soil, dt, soil_predicted_);
+  if (p_.drag_step == DragStep::kExponential) {  // and v^n, the states' velocities
+    state_velocities(water, water_velocity_);
+    state_velocities(soil, soil_velocity_);
+  }
   const int max_threads = threads();
   double water_force[D] = {};
   threads_used_ = 1;
@@ -43,8 +49,19 @@ void SoilWaterSums<D, Kernel>::implicit_drag(const coupling::StepState& water,
         // velocity, over 1 + dt (lambda_a + lambda_i) (one backward-Euler step of the pair's
         // relative velocity, linearised; soil_water_interaction.h).
         const Vec v_r = water_predicted_[a] - soil_predicted_[i];
-        const Vec f = porous::seepage_force<D>(soil_i.a, soil_i.b, v_r) *
-                      (volume_a * soil_i.volume * w[c] / (1.0 + dt * (rate_a + out.soil_rate[i])));
+        const double scale = volume_a * soil_i.volume * w[c];
+        const double x = dt * (rate_a + out.soil_rate[i]);
+        Vec f;
+        if (p_.drag_step == DragStep::kBackwardEuler) {
+          f = porous::seepage_force<D>(soil_i.a, soil_i.b, v_r) * (scale / (1.0 + x));
+        } else {  // the exact mean over the step of the linearised pair (drag_step_weights.h)
+          const Vec v_r0 = water_velocity_[a] - soil_velocity_[i];
+          const Vec f0 = porous::seepage_force<D>(soil_i.a, soil_i.b, v_r0);
+          const DragStepWeights weight = drag_step_weights(DragStep::kExponential, x);
+          f = (weight.start * f0 +
+               weight.change * (porous::seepage_force<D>(soil_i.a, soil_i.b, v_r) - f0)) *
+              scale;
+        }
         double* soil_sums = acc.data() + static_cast<std::size_t>(i) * D;
         for (int k = 0; k < D; ++k) soil_sums[k] += f[k];
         on_water -= f;

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "coupler/interaction/cross_neighbours.h"
+#include "coupler/interaction/drag_step_weights.h"
 #include "coupler/interaction/soil_water_interaction.h"
 #include "coupler/interaction/wall_kernel_share.h"
 #include "porous/seepage_law.h"
@@ -42,6 +43,7 @@ struct InteractionParameters {
   double submerged_saturation = 0.8;  ///< coupling.submerged_saturation
   int threads = 0;                    ///< OpenMP threads of the sums; 0: OpenMP's default
   bool implicit_drag = true;          ///< also the drag rates (InteractionOutputs)
+  DragStep drag_step = DragStep::kBackwardEuler;  ///< coupling.drag_step (drag_step_weights.h)
   std::vector<SoilMaterialTerms> materials;
   /// coupling.drag_at_walls = "renormalised": the fixed wall particles of the walls that hold
   /// neither water nor soil (n x D, flattened) and their volume dp^D (wall_kernel_share.h); empty:
@@ -364,6 +366,14 @@ class SoilWaterSums final : public InteractionEngine {
     }
   }
 
+  /// v^n per overlap particle: the state's velocity.
+  static void state_velocities(const coupling::StepState& s, std::vector<Vec>& out) {
+    const std::size_t n = s.overlap_id.size();
+    out.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+      out[i] = Eigen::Map<const Vec>(s.overlap_velocity.data() + i * D);
+  }
+
   /// The thread count of the parallel loops: InteractionParameters::threads, or OpenMP's default.
   int threads() const { return p_.threads > 0 ? p_.threads : omp_get_max_threads(); }
 
@@ -377,6 +387,7 @@ class SoilWaterSums final : public InteractionEngine {
   std::vector<SoilPairData> soil_;
   std::vector<double> effective_mass_;                 ///< m_i^s per soil overlap particle
   std::vector<Vec> water_predicted_, soil_predicted_;  ///< implicit_drag(): v* per particle
+  std::vector<Vec> water_velocity_, soil_velocity_;    ///< implicit_drag(): v^n (exponential)
   std::vector<std::vector<double>> partial_;  ///< per thread: kStride sums per soil particle
   std::vector<std::vector<double>> pair_r_, pair_w_;  ///< per thread: r, W of one particle's pairs
   /// compute()'s pairs within the support, for implicit_drag(): per thread the soil index and W of

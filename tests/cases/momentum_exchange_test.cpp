@@ -89,12 +89,13 @@ std::vector<std::vector<double>> momenta(const std::string& file, double mass) {
   return out;
 }
 
-void expect_momentum_kept(bool implicit_drag) {
+void expect_momentum_kept(bool implicit_drag, const std::string& drag_step = "backward_euler") {
   const std::string flag = implicit_drag ? "true" : "false";
   const std::string k = implicit_drag ? "1e-4" : "1e-2";
-  const auto run = run_scene_text(
-      "momentum_box_" + flag, kBox,
-      {"coupling.implicit_drag=" + flag, "soil.materials.0.hydraulic_conductivity=" + k});
+  const auto run =
+      run_scene_text("momentum_box_" + flag + "_" + drag_step, kBox,
+                     {"coupling.implicit_drag=" + flag, "coupling.drag_step=" + drag_step,
+                      "soil.materials.0.hydraulic_conductivity=" + k});
   ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
   ASSERT_EQ(run.record.at("steps").get<int>(), 1000);
   const double dp2 = 0.005 * 0.005;
@@ -167,6 +168,10 @@ TEST(MomentumExchange, DarcyColumnWaterMomentumIsGravityPlusTheBookedDrag) {
 
 TEST(MomentumExchange, ExplicitDragKeepsTheTotalMomentum) { expect_momentum_kept(false); }
 TEST(MomentumExchange, ImplicitDragKeepsTheTotalMomentum) { expect_momentum_kept(true); }
+// The exponential weights of coupling.drag_step are applied pair by pair like backward Euler's.
+TEST(MomentumExchange, ExponentialDragStepKeepsTheTotalMomentum) {
+  expect_momentum_kept(true, "exponential");
+}
 
 }  // namespace
 }  // namespace porosph::testing
