@@ -111,13 +111,16 @@ CASES = [
     case("hydraulic_heave", "Hydraulic heave next to a sheet pile (paper 4.3), phi 29 / 40",
          "cases/hydraulic_heave/scene.toml", "hydraulic_heave",
          overrides=["run.dp=0.0025", "run.checkpoint_wall_minutes=10"],
-         plot=case_plots.hydraulic_heave, run_dir="../long/heave_dp0.0025_v2",
+         plot=case_plots.hydraulic_heave, run_dir="../long/heave_dp2.5_s34",
          notes="dp 2.5 mm (the paper's spacing); Drucker-Prager matched to Mohr-Coulomb for "
                "psi = 0 (yield_fit = flow_rule, docs/soil.md). The verdict over three resolutions "
                "(dp 10 / 5 / 2.5 mm) is in docs/validation-studies.md, 'Hydraulic heave at three "
                "resolutions': at the scene's cfl 0.2 it does not converge; at one time step "
                "(9.3e-6 s) no level fails by 6 s ('Heave: the coarse levels' late advance and "
-               "failure are the time step')."),
+               "failure are the time step'). The sand carried under the pile and the gravel's "
+               "mean settlement are bulk measures beside the one-particle failure, for "
+               "self-convergence; the time step's error in them is the drag's weighting over the "
+               "step ('Heave: where the time step's error comes from')."),
     case("heave_eq10", "Hydraulic heave with the seed paper's eq. 10 cone, phi 29 / 40",
          "cases/hydraulic_heave/scene.toml", "hydraulic_heave",
          overrides=["run.dp=0.005"] + EQ10, plot=case_plots.hydraulic_heave,
