@@ -71,7 +71,7 @@ void add_soil_terms(std::vector<TermSpec>& t) {
            .one_of({"euler", "modified_euler"})
            .doc("The stress update's step at the step's strain rate and spin. euler: the rate "
                 "(eq. 6 + 12a) at the old stress, first order in dt; modified_euler: its mean at "
-                "the old and the Euler-predicted stress (Heun; Sloan et al. 2001 without "
+                "the old and the Euler-predicted stress (Heun; Sloan 1987 without "
                 "substeps), second order, one more rate evaluation per particle (docs/soil.md, "
                 "Time integration).")}));
   t.push_back(soil_term("artificial_viscosity",

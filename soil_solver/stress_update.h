@@ -50,14 +50,14 @@ inline Eigen::Matrix3d update_stress(const Material& m, const Eigen::Matrix3d& s
 }
 
 /// New stress after dt by the modified Euler (Heun) step of the same rate, the explicit scheme
-/// of Sloan et al. (2001, Int. J. Numer. Meth. Engng 2001; 51: 541-575) without its error-
+/// of Sloan (1987, Int. J. Numer. Meth. Engng 24, 893-911) without its error-
 /// controlled substeps: the rate of eq. 12a at the old stress and at the Euler-predicted stress
 ///   sigma* = sigma + dt R(sigma),   sigma_new = sigma + dt/2 [R(sigma) + R(sigma*)],
 /// both at the step's strain rate and spin, then the corrections of step 3. For a fixed velocity
 /// gradient it is second order in dt where the forward Euler step is first: the co-rotation, and
 /// the plastic multiplier that forward Euler takes at the old stress only (eq. 12b), are
 /// evaluated at both ends. A state that crosses the surface within the step gets the mean of the
-/// elastic rate and the plastic rate at the (outside) predictor, as in Sloan et al. The cost is
+/// elastic rate and the plastic rate at the (outside) predictor, as in Sloan (1987). The cost is
 /// one more rate evaluation per particle, no neighbour pass. Accumulates dt/2 (lambda_dot +
 /// lambda_dot*) in `state`.
 inline Eigen::Matrix3d update_stress_modified_euler(const Material& m, const Eigen::Matrix3d& sigma,
