@@ -18,10 +18,8 @@ void SoilWaterSums<D, Kernel>::implicit_drag(const coupling::StepState& water,
   const std::size_t n_soil = grid_.soil_size();
   predict(water, dt, water_predicted_);
   predict(soil, dt, soil_predicted_);
-  if (p_.drag_step == DragStep::kExponential) {  // and v^n, the states' velocities
-    state_velocities(water, water_velocity_);
-    state_velocities(soil, soil_velocity_);
-  }
+  const double* water_velocity = water.overlap_velocity.data();  // v^n, for "exponential"
+  const double* soil_velocity = soil.overlap_velocity.data();
   const int max_threads = threads();
   double water_force[D] = {};
   threads_used_ = 1;
@@ -55,7 +53,8 @@ void SoilWaterSums<D, Kernel>::implicit_drag(const coupling::StepState& water,
         if (p_.drag_step == DragStep::kBackwardEuler) {
           f = porous::seepage_force<D>(soil_i.a, soil_i.b, v_r) * (scale / (1.0 + x));
         } else {  // the exact mean over the step of the linearised pair (drag_step_weights.h)
-          const Vec v_r0 = water_velocity_[a] - soil_velocity_[i];
+          const Vec v_r0 = Eigen::Map<const Vec>(water_velocity + a * D) -
+                           Eigen::Map<const Vec>(soil_velocity + i * D);
           const Vec f0 = porous::seepage_force<D>(soil_i.a, soil_i.b, v_r0);
           const DragStepWeights weight = drag_step_weights(DragStep::kExponential, x);
           f = (weight.start * f0 +

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "coupler/interaction/soil_water_sums.h"
+#include "scene/choice.h"
 #include "scene/term_registry.h"
 #include "sph/geometry.h"
 #include "sph/kernel_choice.h"
@@ -32,14 +33,10 @@ InteractionParameters parameters_from_scene(const scene::Scene& s) {
   p.unit_weight_water = water.rho0 * gravity;
   p.submerged_saturation = s.coupling.submerged_saturation;
   p.implicit_drag = s.coupling.implicit_drag;
-  if (s.coupling.drag_step != "backward_euler" && s.coupling.drag_step != "exponential") {
-    throw std::invalid_argument(
-        "coupling.drag_step: expected \"backward_euler\" or "
-        "\"exponential\", got \"" +
-        s.coupling.drag_step + "\"");
-  }
-  p.drag_step =
-      s.coupling.drag_step == "exponential" ? DragStep::kExponential : DragStep::kBackwardEuler;
+  p.drag_step = scene::checked_choice("coupling.drag_step", s.coupling.drag_step,
+                                      {"backward_euler", "exponential"}) == "exponential"
+                    ? DragStep::kExponential
+                    : DragStep::kBackwardEuler;
   if (s.coupling.drag_at_walls != "truncated" && s.coupling.drag_at_walls != "renormalised") {
     throw std::invalid_argument(
         "coupling.drag_at_walls: expected \"truncated\" or "

@@ -366,14 +366,6 @@ class SoilWaterSums final : public InteractionEngine {
     }
   }
 
-  /// v^n per overlap particle: the state's velocity.
-  static void state_velocities(const coupling::StepState& s, std::vector<Vec>& out) {
-    const std::size_t n = s.overlap_id.size();
-    out.resize(n);
-    for (std::size_t i = 0; i < n; ++i)
-      out[i] = Eigen::Map<const Vec>(s.overlap_velocity.data() + i * D);
-  }
-
   /// The thread count of the parallel loops: InteractionParameters::threads, or OpenMP's default.
   int threads() const { return p_.threads > 0 ? p_.threads : omp_get_max_threads(); }
 
@@ -387,7 +379,6 @@ class SoilWaterSums final : public InteractionEngine {
   std::vector<SoilPairData> soil_;
   std::vector<double> effective_mass_;                 ///< m_i^s per soil overlap particle
   std::vector<Vec> water_predicted_, soil_predicted_;  ///< implicit_drag(): v* per particle
-  std::vector<Vec> water_velocity_, soil_velocity_;    ///< implicit_drag(): v^n (exponential)
   std::vector<std::vector<double>> partial_;  ///< per thread: kStride sums per soil particle
   std::vector<std::vector<double>> pair_r_, pair_w_;  ///< per thread: r, W of one particle's pairs
   /// compute()'s pairs within the support, for implicit_drag(): per thread the soil index and W of

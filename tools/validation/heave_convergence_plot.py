@@ -62,7 +62,7 @@ def main(argv):
     cfls = {p["run"]["cfl"] for p in parameter_sets}
     for run, parameters in zip(runs, parameter_sets):
         s = read_csv(os.path.join(run, "validate_series.csv"))
-        if measure not in ("advance",) and measure not in s:
+        if measure != "advance" and measure not in s:
             sys.exit(f"{run}/validate_series.csv has no column {measure}: rerun porosph_validate")
         values = values_of(s)
         dp, cfl = parameters["run"]["dp"], parameters["run"]["cfl"]
