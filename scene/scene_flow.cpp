@@ -32,7 +32,9 @@ void add_flow_zones(SceneSchema& s) {
                        .optional()
                        .above(0)
                        .doc("Prescribed flow rate once ramped up; speed = flow_rate / "
-                            "cross_section (the superficial velocity of a 2D model of a 3D rig)."));
+                            "cross_section (the superficial velocity of a 2D model of a 3D rig). "
+                            "The box must be a whole number of run.dp rows across the flow, or "
+                            "its particles would carry another discharge (refused)."));
   s.keys.push_back(Key("water.inflow[].cross_section", T::Float)
                        .unit("m^2")
                        .optional()

@@ -6,7 +6,9 @@
 //    gravity > 0, a grain diameter whose square does not underflow);
 //  - a speed the scene prescribes to water (inflow zones, the Taylor-Green field) stays below
 //    Mach kMachLimit;
-//  - the output interval is not far below the expected time step (kMinOutputIntervalOverDt).
+//  - the output interval is not far below the expected time step (kMinOutputIntervalOverDt);
+//  - a flow_rate inflow zone is a whole number of lattice rows across the flow (or it would carry
+//    another discharge than flow_rate).
 #include "scene/scene_sanity.h"
 
 #include <algorithm>
@@ -17,6 +19,7 @@
 
 #include "porous/seepage_laws.h"
 #include "scene/scene_internal.h"
+#include "scene/thin_walls.h"
 
 namespace porosph::scene {
 namespace {
@@ -97,6 +100,7 @@ class SanityChecker {
       const std::string key = "water.inflow[" + std::to_string(i) + "]";
       const bool given = root_.at_path(key + ".velocity").node() != nullptr;
       prescribed_speed(w.inflows[i].speed, key + (given ? ".velocity" : ".flow_rate"), w);
+      if (!given) whole_rows_across(w.inflows[i], key);
     }
     for (std::size_t i = 0; i < w.reservoirs.size(); ++i) {
       const ReservoirZone& r = w.reservoirs[i];
@@ -122,6 +126,33 @@ class SanityChecker {
            "the water particle mass rho0 dp^" + std::to_string(scene_.run.dimension) + " = " +
                format_number(mass) +
                " kg is not a finite positive number (water.rho0 = " + format_number(w.rho0) + ")");
+  }
+
+  /// A flow_rate zone carries flow_rate only when the lattice of run.dp fills its box across the
+  /// flow: its particles move at flow_rate / cross_section, so the discharge is that speed times
+  /// the rows' width (rows x dp per axis across the direction, lattice_count), not the box's.
+  /// A box 0.04 m across at dp 0.0283 holds one row and would carry 71 % of flow_rate.
+  void whole_rows_across(const InflowZone& z, const std::string& key) const {
+    const double dp = scene_.run.dp;
+    double filled = 1.0;
+    std::string across;
+    for (std::size_t k = 0; k < z.direction.size() && k < z.min.size(); ++k) {
+      if (z.direction[k] != 0.0) continue;
+      const double extent = z.max[k] - z.min[k];
+      const double rows = static_cast<double>(lattice_count(z.min[k], z.max[k], dp));
+      filled *= rows * dp / extent;
+      across += (across.empty() ? "" : ", ") + rounded(extent) + " m along " +
+                std::string(1, "xyz"[k % 3]) + " holds " + format_number(rows) + " row" +
+                (rows == 1.0 ? "" : "s") + ", " + rounded(rows * dp) + " m";
+    }
+    if (std::fabs(filled - 1.0) <= 1e-6) return;
+    fail(key + ".max", "the zone's box is not a whole number of rows of run.dp = " +
+                           format_number(dp) + " m across the flow (" + across +
+                           "): its particles move at flow_rate / cross_section, so it would "
+                           "carry " +
+                           rounded(100.0 * filled) +
+                           " % of flow_rate; make the box a whole number of dp across (and "
+                           "cross_section with it) or choose run.dp to fit");
   }
 
   /// A speed the scene prescribes to water stays below kMachLimit c0.

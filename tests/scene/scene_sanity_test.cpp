@@ -84,6 +84,28 @@ TEST(SceneSanity, AnOutputIntervalBelowDt0IsFine) {
   EXPECT_DOUBLE_EQ(expected_time_step(scene), 1e-4);
 }
 
+/// kWaterColumn2D (dp 0.01) with a flow_rate inflow zone from y = 0.5 to y_max (a sheet
+/// running along x), or a velocity zone.
+std::string with_inflow(const std::string& y_max, bool flow_rate = true) {
+  return kWaterColumn2D + "\n[[water.inflow]]\nmin = [0.0, 0.5]\nmax = [0.1, " + y_max +
+         "]\ndirection = [1.0, 0.0]\n" +
+         (flow_rate ? "flow_rate = 0.01\ncross_section = 0.04\n" : "velocity = 0.25\n");
+}
+
+TEST(SceneSanity, FlowRateZoneMustBeWholeRowsAcrossTheFlow) {
+  // 0.045 m across at dp 0.01 holds four rows (0.04 m): the zone would carry 88.9 % of flow_rate.
+  expect_refused({"flow_rate zone 4.5 rows across", with_inflow("0.545"), "water.inflow[0].max",
+                  "max = [0.1, 0.545]", "carry 88.9 % of flow_rate"});
+  // The same over an override of dp: 0.04 m at dp 0.0283 is one row, 70.7 %.
+  const SceneError e = error_of(with_inflow("0.54"), {"run.dp=0.028284"});
+  EXPECT_EQ(e.key(), "water.inflow[0].max") << e.what();
+  EXPECT_NE(std::string(e.what()).find("carry 70.7 % of flow_rate"), std::string::npos) << e.what();
+  // Whole rows (four, and two at dp 0.02) pass; a velocity zone prescribes no discharge.
+  EXPECT_NO_THROW(load_scene_text(with_inflow("0.54"), "x.toml"));
+  EXPECT_NO_THROW(load_scene_text(with(with_inflow("0.54"), "dp = 0.01", "dp = 0.02"), "x.toml"));
+  EXPECT_NO_THROW(load_scene_text(with_inflow("0.545", false), "x.toml"));
+}
+
 TEST(SceneSanity, ExpectedTimeStepTakesTheSmallestLimit) {
   // h = 0.012 m: cfl h / c = 0.2 * 0.012 / 20 = 1.2e-4 > dt0; gravity 1e9: the force limit
   // c_a sqrt(h / |g|) = 0.25 sqrt(1.2e-11) = 8.66e-7 s.
