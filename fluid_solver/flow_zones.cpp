@@ -43,10 +43,16 @@ FlowZones<D>::FlowZones(const scene::WaterPhase& water, double dp, double h, con
     if (nonzero != 1 || std::abs(std::abs(f.direction[f.axis]) - 1.0) > 1e-12)
       throw std::invalid_argument(what + ".direction: must be a unit vector along one axis");
     f.direction[f.axis] = f.direction[f.axis] > 0.0 ? 1.0 : -1.0;
-    f.downstream = f.direction[f.axis] > 0.0 ? f.box.max[f.axis] : f.box.min[f.axis];
     const long rows = sph::lattice_count(f.box.min[f.axis], f.box.max[f.axis], dp);
     if (rows < 1) throw std::invalid_argument(what + ": shorter than one particle spacing");
     f.lattice_length = static_cast<double>(rows) * dp;
+    // The box's downstream face, or the lattice's downstream end where the rows reach past it
+    // (up to dp / 2: a 0.1 m box at dp 0.0283 holds four rows, 0.113 m), so that a particle born
+    // lattice_length upstream lands inside the box, not beyond its upstream face (and the
+    // domain, where the zone starts at the domain's face).
+    f.downstream = f.direction[f.axis] > 0.0
+                       ? std::max(f.box.max[f.axis], f.box.min[f.axis] + f.lattice_length)
+                       : std::min(f.box.min[f.axis], f.box.max[f.axis] - f.lattice_length);
     if (f.box.max[f.axis] - f.box.min[f.axis] < 2.0 * h - 1e-12 * dp)
       throw std::invalid_argument(
           what + ": the zone is " + std::to_string(f.box.max[f.axis] - f.box.min[f.axis]) +

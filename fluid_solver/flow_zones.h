@@ -10,7 +10,8 @@
 // does
 //   x += dt u(t + dt/2)                    (the exact integral of u for the linear ramp)
 //   v^{n-1} = u(t),  v^{n+1} = u(t + dt)   (the two Verlet levels a free particle needs)
-// A zone particle past the downstream face (the face along e) becomes a free particle with these
+// A zone particle past the downstream face (the face along e; or, where the zone's rows reach
+// past it, the lattice's end L from the upstream face, L below) becomes a free particle with these
 // velocities, and a new zone particle is born at x - L e with the crossing particle's density,
 // pressure, mass m = rho dp^D and a fresh id. L = N dp, N the number of lattice rows of the zone
 // along e (the zone's length when that is a multiple of dp), so the zone keeps its lattice and

@@ -185,6 +185,37 @@ void check_ramp_and_renewal() {
 TEST(InflowZone, SpeedRampPrescribedMotionAndLatticeRenewal2D) { check_ramp_and_renewal<2>(); }
 TEST(InflowZone, SpeedRampPrescribedMotionAndLatticeRenewal3D) { check_ramp_and_renewal<3>(); }
 
+// A zone whose rows reach past its box along the flow (0.036 m at dp 0.01 holds four rows, 0.04
+// m) and which starts at the domain's face: each particle is handed over at the lattice's end,
+// so the one born 0.04 m upstream lands inside the box. Handed over at the box's face (before),
+// the newborn landed 4 mm outside the domain and was removed: the zone emptied after its first
+// rows (the rockfill sheet at dp 0.0283, a 0.1 m box, injected four particles and stopped).
+TEST(InflowZone, RowsReachingPastTheBoxKeepTheZoneFull) {
+  const double dp = 0.01, dt = 1e-4;
+  scene::Scene s = water_scene(dp, {0.0, -0.05}, {1.0, 0.07});
+  s.run.gravity.assign(2, 0.0);
+  s.water->inflows.push_back(inflow({0.0, 0.0}, {0.036, 0.02}, {1.0, 0.0}, 1.0));
+  WaterSolver<2> f(s);
+  const std::size_t zone_size = 4 * 2;  // four rows along x, two across
+  ASSERT_EQ(f.free_count(), zone_size);
+  for (int step = 0; step < 1500; ++step) {  // 0.15 m at 1 m/s
+    f.compute_rates();
+    f.advance(dt);
+  }
+  const WaterParticles<2>& P = f.particles();
+  std::size_t in_zone = 0;
+  for (std::size_t a = 0; a < P.n_free; ++a) {
+    if (P.zone[a] < 0) continue;
+    ++in_zone;
+    EXPECT_GE(P.position[a][0], 0.0);
+    EXPECT_LE(P.position[a][0], 0.04);
+  }
+  EXPECT_EQ(in_zone, zone_size);
+  // A row crosses x = 0.04 at every 0.01 m of travel from 0.005 m on: 15 rows by 0.15 m.
+  EXPECT_EQ(f.born_count(), 15 * 2u);
+  EXPECT_EQ(P.n_free, zone_size + f.born_count());
+}
+
 TEST(OutflowZone, RemovesExactlyTheParticlesThatEnterIt) {
   // Eight isolated particles (0.1 m apart: no neighbours within 2h = 0.024 m) fall from
   // centres y0 = 0.0123 + 0.0457 i under g; their positions are exact parabolas (round-off only,
