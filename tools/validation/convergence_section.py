@@ -94,7 +94,9 @@ ELSEWHERE = [
      "docs/validation-studies.md, 'granular_collapse: three levels' (a one-particle sheet at the "
      "toe that grows with refinement; the bulk front is the study above)"),
     ("rockfill_*", "B",
-     "docs/validation-studies.md, 'Rockfill' (dp 0.02 m; dp 0.01 m not finished)"),
+     "docs/validation-studies.md, 'Rockfill at three resolutions' (W = 1.0 m, dp 0.04 / "
+     "0.0283 / 0.02 m: at 19.36 l/s +37.5 / +20.2 / +15.6 %, p = 1.77, 0.76, error falls; at "
+     "30.45 l/s +11.8 / -1.8 / +13.2 %, error grows: not converged, B still stepping at 95 s)"),
     ("hydraulic_heave", "time of complete failure, head, gravel advance",
      "docs/validation-studies.md, 'Hydraulic heave at three resolutions' (at cfl 0.2 the "
      "failure does not converge) and 'Heave: the coarse levels' late advance and failure are "
