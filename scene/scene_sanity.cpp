@@ -109,8 +109,8 @@ class SanityChecker {
       for (std::size_t k = 0; k < r.direction.size(); ++k)
         if (r.direction[k] != 0.0) axis = k;
       const double dp = scene_.run.dp, support = 2.0 * scene_.h();
-      // the buffer's rows along the normal, as the solver counts them (sph::lattice_count)
-      const double rows = std::max(0.0, std::ceil((r.max[axis] - r.min[axis]) / dp - 0.5 - 1e-9));
+      // the buffer's rows along the normal, as the solver counts them
+      const double rows = static_cast<double>(lattice_count(r.min[axis], r.max[axis], dp));
       if (rows * dp < support - 1e-12 * dp)
         fail("water.reservoir[" + std::to_string(i) + "].max",
              "the open reservoir's buffer holds " + format_number(rows) + " rows of run.dp = " +

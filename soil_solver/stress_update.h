@@ -37,16 +37,22 @@ inline Eigen::Matrix3d stress_rate(const Material& m, const Eigen::Matrix3d& sig
   return rate;
 }
 
+/// Step 3 on the integrated stress `next`, and lambda_dot dt into `state` (both updates end so).
+inline Eigen::Matrix3d corrected_stress(const Material& m, Eigen::Matrix3d next, double lambda_dot,
+                                        double dt, PlasticState& state) {
+  const bool corrected = apply_return_corrections(m, next);
+  state.plastic_multiplier += lambda_dot * dt;
+  state.plastic_last_update = corrected || lambda_dot > 0.0;
+  return next;
+}
+
 /// New stress after dt (steps 1-3 above); accumulates lambda_dot dt in `state`.
 inline Eigen::Matrix3d update_stress(const Material& m, const Eigen::Matrix3d& sigma,
                                      const Eigen::Matrix3d& strain_rate,
                                      const Eigen::Matrix3d& spin, double dt, PlasticState& state) {
   double lambda_dot = 0.0;
-  Eigen::Matrix3d next = sigma + dt * stress_rate(m, sigma, strain_rate, spin, lambda_dot);
-  const bool corrected = apply_return_corrections(m, next);
-  state.plastic_multiplier += lambda_dot * dt;
-  state.plastic_last_update = corrected || lambda_dot > 0.0;
-  return next;
+  const Eigen::Matrix3d next = sigma + dt * stress_rate(m, sigma, strain_rate, spin, lambda_dot);
+  return corrected_stress(m, next, lambda_dot, dt, state);
 }
 
 /// New stress after dt by the modified Euler (Heun) step of the same rate, the explicit scheme
@@ -69,12 +75,8 @@ inline Eigen::Matrix3d update_stress_modified_euler(const Material& m, const Eig
   const Eigen::Matrix3d predicted = sigma + dt * rate_old;
   const Eigen::Matrix3d rate_predicted =
       stress_rate(m, predicted, strain_rate, spin, lambda_dot_predicted);
-  Eigen::Matrix3d next = sigma + (0.5 * dt) * (rate_old + rate_predicted);
-  const bool corrected = apply_return_corrections(m, next);
-  const double lambda_dot = 0.5 * (lambda_dot_old + lambda_dot_predicted);
-  state.plastic_multiplier += lambda_dot * dt;
-  state.plastic_last_update = corrected || lambda_dot > 0.0;
-  return next;
+  const Eigen::Matrix3d next = sigma + (0.5 * dt) * (rate_old + rate_predicted);
+  return corrected_stress(m, next, 0.5 * (lambda_dot_old + lambda_dot_predicted), dt, state);
 }
 
 }  // namespace porosph::soil
